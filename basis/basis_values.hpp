@@ -1,0 +1,16 @@
+#pragma once
+// Values and parametric derivatives of an element's local basis functions at a batch of points.
+#include <Eigen/Core>
+
+namespace iga::basis {
+
+/// Every block is (local dofs × points), column-major. Derivatives are with respect to the element's
+/// reference coordinates (u, v) on the unit square or triangle, not the physical coordinates.
+/// Blocks beyond the requested derivative order are left untouched (their size is unspecified).
+struct BasisValues {
+  Eigen::MatrixXd value;
+  Eigen::MatrixXd du, dv;         ///< first derivatives, when derivatives >= 1
+  Eigen::MatrixXd duu, duv, dvv;  ///< second derivatives, when derivatives >= 2
+};
+
+}  // namespace iga::basis

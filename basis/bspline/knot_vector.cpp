@@ -1,0 +1,144 @@
+#include "basis/bspline/knot_vector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace iga::basis::bspline {
+
+KnotVector::KnotVector(int degree, std::vector<double> knots) : degree_(degree), knots_(std::move(knots)) {
+  const int p = degree_;
+  if (p < 1) throw InputError("knot vector: degree " + std::to_string(p) + " is not >= 1");
+  const Index m = size();
+  if (m < 2 * p + 2) {
+    throw InputError("knot vector: " + std::to_string(m) + " knots; degree " + std::to_string(p) +
+                     " needs at least " + std::to_string(2 * p + 2));
+  }
+  for (Index i = 0; i < m; ++i) {
+    if (!std::isfinite(knots_[i])) throw InputError("knot vector: knot " + std::to_string(i) + " is not finite");
+    if (i > 0 && knots_[i] < knots_[i - 1]) {
+      std::ostringstream s;
+      s << "knot vector: knots decrease at index " << i << " (" << knots_[i - 1] << " > " << knots_[i] << ")";
+      throw InputError(s.str());
+    }
+  }
+  for (int i = 1; i <= p; ++i) {
+    if (knots_[i] != knots_[0] || knots_[m - 1 - i] != knots_[m - 1]) {
+      throw InputError("knot vector: not open (clamped): the first and last " + std::to_string(p + 1) +
+                       " knots must be equal");
+    }
+  }
+  if (!(front() < back())) throw InputError("knot vector: empty domain");
+  // Interior multiplicities.
+  for (Index i = p + 1; i < num_basis();) {
+    Index j = i;
+    while (j + 1 < num_basis() && knots_[j + 1] == knots_[i]) ++j;
+    const Index mult = j - i + 1;
+    if (mult > p) {
+      std::ostringstream s;
+      s << "knot vector: interior knot " << knots_[i] << " has multiplicity " << mult << " > degree " << p;
+      throw InputError(s.str());
+    }
+    i = j + 1;
+  }
+  for (Index mu = p; mu < num_basis(); ++mu) {
+    if (knots_[mu] < knots_[mu + 1]) spans_.push_back(mu);
+  }
+}
+
+KnotVector KnotVector::uniform(int degree, Index intervals, double a, double b) {
+  if (intervals < 1) throw InputError("knot vector: need at least one interval");
+  std::vector<double> t;
+  for (int i = 0; i < degree; ++i) t.push_back(a);
+  for (Index i = 0; i <= intervals; ++i) {
+    t.push_back(i == intervals ? b : a + (b - a) * static_cast<double>(i) / static_cast<double>(intervals));
+  }
+  for (int i = 0; i < degree; ++i) t.push_back(b);
+  return KnotVector(degree, std::move(t));
+}
+
+std::vector<double> KnotVector::breakpoints() const {
+  std::vector<double> b;
+  for (Index mu : spans_) b.push_back(knots_[mu]);
+  b.push_back(back());
+  return b;
+}
+
+Index KnotVector::span(double x) const {
+  if (x <= front()) return spans_.front();
+  if (x >= back()) return spans_.back();
+  // Largest mu with t_mu <= x; since x < back(), t_{mu+1} > x >= t_mu.
+  auto it = std::upper_bound(knots_.begin(), knots_.end(), x);
+  return static_cast<Index>(it - knots_.begin()) - 1;
+}
+
+Eigen::MatrixXd basis_functions(const KnotVector& kv, Index span, double x, int derivatives) {
+  const int p = kv.degree();
+  // vals[q](j) = N_{span-q+j, q}(x), j = 0..q (Cox–de Boor, degree by degree).
+  std::vector<Eigen::VectorXd> vals(p + 1);
+  vals[0] = Eigen::VectorXd::Ones(1);
+  for (int q = 1; q <= p; ++q) {
+    const Eigen::VectorXd& lo = vals[q - 1];  // lo(j) = N_{span-q+1+j, q-1}
+    Eigen::VectorXd hi = Eigen::VectorXd::Zero(q + 1);
+    for (int j = 0; j <= q; ++j) {
+      const Index i = span - q + j;
+      double v = 0.0;
+      if (j >= 1) {
+        const double den = kv[i + q] - kv[i];
+        if (den > 0) v += (x - kv[i]) / den * lo(j - 1);
+      }
+      if (j <= q - 1) {
+        const double den = kv[i + q + 1] - kv[i + 1];
+        if (den > 0) v += (kv[i + q + 1] - x) / den * lo(j);
+      }
+      hi(j) = v;
+    }
+    vals[q] = hi;
+  }
+  // D^r N_{i,q} = q (D^{r-1} N_{i,q-1}/(t_{i+q}-t_i) - D^{r-1} N_{i+1,q-1}/(t_{i+q+1}-t_{i+1})).
+  auto derivative = [&](auto&& self, int r, int q) -> Eigen::VectorXd {
+    if (r == 0) return vals[q];
+    if (q == 0) return Eigen::VectorXd::Zero(1);
+    const Eigen::VectorXd lo = self(self, r - 1, q - 1);
+    Eigen::VectorXd hi = Eigen::VectorXd::Zero(q + 1);
+    for (int j = 0; j <= q; ++j) {
+      const Index i = span - q + j;
+      double v = 0.0;
+      if (j >= 1) {
+        const double den = kv[i + q] - kv[i];
+        if (den > 0) v += lo(j - 1) / den;
+      }
+      if (j <= q - 1) {
+        const double den = kv[i + q + 1] - kv[i + 1];
+        if (den > 0) v -= lo(j) / den;
+      }
+      hi(j) = q * v;
+    }
+    return hi;
+  };
+  Eigen::MatrixXd out(derivatives + 1, p + 1);
+  for (int r = 0; r <= derivatives; ++r) out.row(r) = derivative(derivative, r, p).transpose();
+  return out;
+}
+
+Eigen::VectorXd blossom_row(const KnotVector& kv, Index span, const double* args) {
+  const int p = kv.degree();
+  Eigen::VectorXd b = Eigen::VectorXd::Ones(1);  // b(j) <-> index span-(k-1)+j at level k-1
+  for (int k = 1; k <= p; ++k) {
+    const double x = args[k - 1];
+    Eigen::VectorXd nb = Eigen::VectorXd::Zero(k + 1);
+    for (int j = 0; j <= k; ++j) {
+      const Index i = span - k + j;
+      double v = 0.0;
+      if (j >= 1) v += (x - kv[i]) / (kv[i + k] - kv[i]) * b(j - 1);
+      if (j <= k - 1) v += (kv[i + k + 1] - x) / (kv[i + k + 1] - kv[i + 1]) * b(j);
+      nb(j) = v;
+    }
+    b = std::move(nb);
+  }
+  return b;
+}
+
+}  // namespace iga::basis::bspline

@@ -1,0 +1,152 @@
+#include "basis/bspline/patches.hpp"
+
+#include <memory>
+
+#include "core/error.hpp"
+
+namespace iga::basis::bspline {
+
+namespace {
+// Degree elevation of Bézier control points (rows) from degree q to q+1:
+// Q_i = i/(q+1) P_{i-1} + (1 - i/(q+1)) P_i.
+Eigen::MatrixXd elevate(const Eigen::MatrixXd& p) {
+  const Eigen::Index q = p.rows() - 1;
+  Eigen::MatrixXd out(q + 2, p.cols());
+  for (Eigen::Index i = 0; i <= q + 1; ++i) {
+    const double a = static_cast<double>(i) / static_cast<double>(q + 1);
+    out.row(i).setZero();
+    if (i >= 1) out.row(i) += a * p.row(i - 1);
+    if (i <= q) out.row(i) += (1.0 - a) * p.row(i);
+  }
+  return out;
+}
+Eigen::MatrixXd elevate_to(Eigen::MatrixXd p, int degree) {
+  while (p.rows() - 1 < degree) p = elevate(p);
+  return p;
+}
+}  // namespace
+
+Geometry make_patch(KnotVector u, KnotVector v, Eigen::MatrixXd control_points) {
+  auto space = std::make_shared<const TensorSpace>(std::move(u), std::move(v));
+  return Geometry(space, std::move(control_points));
+}
+
+Geometry make_quarter_annulus(int degree, double r_inner, double r_outer) {
+  if (degree < 2) {
+    throw InputError("quarter annulus: the arc is quadratic, degree " + std::to_string(degree) +
+                     " cannot represent it; use degree >= 2 or give a mesh");
+  }
+  if (!(r_inner > 0.0 && r_outer > r_inner)) throw InputError("quarter annulus: need 0 < r_inner < r_outer");
+  Eigen::MatrixXd arc(3, 2);
+  arc << 1.0, 0.0, 1.0, 1.0, 0.0, 1.0;
+  const Eigen::MatrixXd arc_p = elevate_to(arc, degree);  // (p+1) × 2, along v
+  Eigen::MatrixXd radius(2, 1);
+  radius << r_inner, r_outer;
+  const Eigen::MatrixXd radius_p = elevate_to(radius, degree);  // (p+1) × 1, along u
+  const int n = degree + 1;
+  Eigen::MatrixXd cp(n * n, 2);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) cp.row(i + n * j) = radius_p(i, 0) * arc_p.row(j);
+  }
+  return make_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp);
+}
+
+Geometry make_rectangle(int degree, double x0, double x1, double y0, double y1) {
+  if (!(x1 > x0 && y1 > y0)) throw InputError("rectangle: need x0 < x1 and y0 < y1");
+  const int n = degree + 1;
+  Eigen::MatrixXd cp(n * n, 2);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      cp(i + n * j, 0) = x0 + (x1 - x0) * i / degree;  // Greville abscissae of a Bézier patch
+      cp(i + n * j, 1) = y0 + (y1 - y0) * j / degree;
+    }
+  }
+  return make_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp);
+}
+
+Geometry geometry_from_quad_grid(const mesh::PolyMesh& m, int degree, const std::string& name) {
+  auto fail = [&](const std::string& why) -> void {
+    throw InputError(name, 0, "not a structured quad grid for a B-spline patch: " + why);
+  };
+  for (Index f = 0; f < m.num_faces(); ++f) {
+    if (m.face_size(f) != 4) fail("face " + std::to_string(f + 1) + " has " + std::to_string(m.face_size(f)) + " vertices");
+  }
+  if (m.is_closed()) fail("the mesh is closed");
+  if (m.boundary_loops().size() != 1) fail("the mesh has " + std::to_string(m.boundary_loops().size()) + " boundary loops");
+  // Start at a corner (a boundary vertex with one face): the first boundary half-edge leaving it.
+  const std::vector<Index>& loop = m.boundary_loops()[0];
+  Index start = -1;
+  for (Index h : loop) {
+    if (m.num_vertex_faces(m.half_edge(h).origin) == 1) {
+      start = h;
+      break;
+    }
+  }
+  if (start < 0) fail("the boundary has no corner (a vertex with a single face)");
+  // Walk rows: row j's half-edges run along u; the next row is twin(next(next(h))) of each.
+  std::vector<Index> row;
+  {
+    // The bottom row: boundary half-edges from the corner to the next corner.
+    std::size_t k = 0;
+    while (loop[k] != start) ++k;
+    for (std::size_t s = 0; s < loop.size(); ++s) {
+      const Index h = loop[(k + s) % loop.size()];
+      row.push_back(h);
+      if (m.num_vertex_faces(m.half_edge_target(h)) == 1) break;
+    }
+  }
+  const Index nu = static_cast<Index>(row.size()) + 1;
+  std::vector<Index> grid;  // vertex indices, i + nu * j
+  for (Index h : row) grid.push_back(m.half_edge(h).origin);
+  grid.push_back(m.half_edge_target(row.back()));
+  Index nv = 1;
+  while (true) {
+    std::vector<Index> up;
+    bool any = false, all = true;
+    for (Index h : row) {
+      const Index opp = m.half_edge(m.half_edge(h).next).next;  // c -> d in the quad a b c d
+      const Index t = m.half_edge(opp).twin;
+      up.push_back(opp);
+      if (t >= 0) any = true; else all = false;
+    }
+    // The top row of vertices: opp runs from (i+1, j+1) to (i, j+1).
+    std::vector<Index> verts(static_cast<std::size_t>(nu));
+    for (std::size_t i = 0; i < up.size(); ++i) {
+      const Index opp = up[i];
+      verts[i] = m.half_edge_target(opp);
+      verts[i + 1] = m.half_edge(opp).origin;
+    }
+    // Consistency: neighbouring quads in a row share the vertical edge.
+    for (std::size_t i = 0; i + 1 < up.size(); ++i) {
+      if (m.half_edge_target(up[i + 1]) != m.half_edge(up[i]).origin) fail("rows do not line up");
+    }
+    grid.insert(grid.end(), verts.begin(), verts.end());
+    ++nv;
+    if (!any) break;
+    if (!all) fail("a row of quads ends before the others (the net is not a rectangle of quads)");
+    std::vector<Index> next_row;
+    for (Index opp : up) next_row.push_back(m.half_edge(opp).twin);
+    row = std::move(next_row);
+    if (nv > m.num_vertices()) fail("rows do not close");
+  }
+  if ((nu - 1) * (nv - 1) != m.num_faces()) {
+    fail(std::to_string(m.num_faces()) + " faces, but the grid from a corner has " + std::to_string(nu - 1) +
+         " × " + std::to_string(nv - 1));
+  }
+  std::vector<char> seen(static_cast<std::size_t>(m.num_vertices()), 0);
+  for (Index v : grid) {
+    if (seen[static_cast<std::size_t>(v)]) fail("vertex " + std::to_string(v + 1) + " appears twice in the grid");
+    seen[static_cast<std::size_t>(v)] = 1;
+  }
+  if (nu < degree + 1 || nv < degree + 1) {
+    throw InputError(name, 0, "the grid has " + std::to_string(nu) + " × " + std::to_string(nv) +
+                                  " control points; degree " + std::to_string(degree) + " needs at least " +
+                                  std::to_string(degree + 1) + " in each direction");
+  }
+  const int dim = m.is_planar() ? 2 : 3;
+  Eigen::MatrixXd cp(nu * nv, dim);
+  for (Index k = 0; k < nu * nv; ++k) cp.row(k) = m.point(grid[static_cast<std::size_t>(k)]).head(dim).transpose();
+  return make_patch(KnotVector::uniform(degree, nu - degree), KnotVector::uniform(degree, nv - degree), cp);
+}
+
+}  // namespace iga::basis::bspline

@@ -1,0 +1,31 @@
+#pragma once
+// B-spline geometries built in code or read from a structured quad control net.
+#include <Eigen/Core>
+
+#include "basis/bspline/tensor_space.hpp"
+#include "basis/geometry.hpp"
+#include "mesh/poly_mesh.hpp"
+
+namespace iga::basis::bspline {
+
+/// Geometry over TensorSpace(u, v) with control points (nu*nv) × dim, index i + nu*j.
+Geometry make_patch(KnotVector u, KnotVector v, Eigen::MatrixXd control_points);
+
+/// The quarter annulus r_inner <= r <= r_outer in the first quadrant as a single Bézier patch of degree
+/// (p, p), p >= 2: u runs radially (linear), v along the arc, which is the quadratic Bézier curve with
+/// control points (1,0), (1,1), (0,1) scaled by r — an arc-like curve, not a circle (no weights). Degree
+/// elevation represents the same domain for every p >= 2, so refinements are nested. InputError for p < 2.
+Geometry make_quarter_annulus(int degree, double r_inner = 1.0, double r_outer = 2.0);
+
+/// The rectangle [x0,x1]×[y0,y1] (affine map) as a single Bézier patch of degree (p, p), p >= 1.
+Geometry make_rectangle(int degree, double x0 = 0.0, double x1 = 1.0, double y0 = 0.0, double y1 = 1.0);
+
+/// A B-spline geometry whose control net is a structured quad grid (a topological rectangle of
+/// nu × nv vertices): degree p in both directions on open uniform knot vectors with nu - p and nv - p
+/// intervals. u runs along the boundary from a corner with the mesh on its left, v across it.
+/// Planar meshes (all z = 0) give a 2D geometry, others a surface in 3D. InputError naming what is wrong
+/// when the mesh is not such a grid (non-quad face, holes, interior valence != 4, ...) or has fewer than
+/// p+1 vertices in a direction. `name` is used in messages (the file name).
+Geometry geometry_from_quad_grid(const mesh::PolyMesh& mesh, int degree, const std::string& name = "mesh");
+
+}  // namespace iga::basis::bspline

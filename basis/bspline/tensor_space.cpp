@@ -1,0 +1,110 @@
+#include "basis/bspline/tensor_space.hpp"
+
+#include "basis/bspline/bernstein.hpp"
+#include "basis/bspline/extraction.hpp"
+#include "basis/bspline/knot_insertion.hpp"
+#include "core/error.hpp"
+
+namespace iga::basis::bspline {
+
+TensorSpace::TensorSpace(KnotVector u, KnotVector v) : u_(std::move(u)), v_(std::move(v)) {
+  nu_ = u_.num_basis();
+  nv_ = v_.num_basis();
+  nex_ = u_.num_intervals();
+  ney_ = v_.num_intervals();
+  const int pu = u_.degree(), pv = v_.degree();
+  nloc_ = (pu + 1) * (pv + 1);
+  cu_ = extraction_operators(u_);
+  cv_ = extraction_operators(v_);
+  dofs_.resize(static_cast<std::size_t>(num_elements() * nloc_));
+  for (Index ey = 0; ey < ney_; ++ey) {
+    const Index sy = v_.interval_spans()[ey] - pv;
+    for (Index ex = 0; ex < nex_; ++ex) {
+      const Index sx = u_.interval_spans()[ex] - pu;
+      Index* d = &dofs_[static_cast<std::size_t>((ex + nex_ * ey) * nloc_)];
+      for (int b = 0; b <= pv; ++b) {
+        for (int a = 0; a <= pu; ++a) *d++ = (sx + a) + nu_ * (sy + b);
+      }
+    }
+  }
+}
+
+std::span<const Index> TensorSpace::dofs(Index e) const {
+  return {&dofs_[static_cast<std::size_t>(e * nloc_)], static_cast<std::size_t>(nloc_)};
+}
+
+Eigen::Vector4d TensorSpace::element_box(Index e) const {
+  const Index ex = e % nex_, ey = e / nex_;
+  const Index mx = u_.interval_spans()[ex], my = v_.interval_spans()[ey];
+  return {u_[mx], u_[mx + 1], v_[my], v_[my + 1]};
+}
+
+void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
+  const Index ex = e % nex_, ey = e / nex_;
+  const int pu = u_.degree(), pv = v_.degree();
+  const Index q = pts.cols();
+  // 1D Bernstein values at the points, then the element's B-splines by extraction: N = C B.
+  thread_local Eigen::MatrixXd bu, bu1, bu2, bv, bv1, bv2, nu0, nu1, nu2, nv0, nv1, nv2;
+  bernstein(pu, pts.row(0), derivatives, bu, &bu1, &bu2);
+  bernstein(pv, pts.row(1), derivatives, bv, &bv1, &bv2);
+  const Eigen::MatrixXd& cu = cu_[static_cast<std::size_t>(ex)];
+  const Eigen::MatrixXd& cv = cv_[static_cast<std::size_t>(ey)];
+  nu0.noalias() = cu * bu;
+  nv0.noalias() = cv * bv;
+  if (derivatives >= 1) {
+    nu1.noalias() = cu * bu1;
+    nv1.noalias() = cv * bv1;
+  }
+  if (derivatives >= 2) {
+    nu2.noalias() = cu * bu2;
+    nv2.noalias() = cv * bv2;
+  }
+  // Tensor products, local index a + (pu+1) b.
+  auto tensor = [&](const Eigen::MatrixXd& fu, const Eigen::MatrixXd& fv, Eigen::MatrixXd& dst) {
+    dst.resize(nloc_, q);
+    for (int b = 0; b <= pv; ++b) {
+      dst.middleRows(b * (pu + 1), pu + 1) = fu.array().rowwise() * fv.row(b).array();
+    }
+  };
+  tensor(nu0, nv0, out.value);
+  if (derivatives >= 1) {
+    tensor(nu1, nv0, out.du);
+    tensor(nu0, nv1, out.dv);
+  }
+  if (derivatives >= 2) {
+    tensor(nu2, nv0, out.duu);
+    tensor(nu1, nv1, out.duv);
+    tensor(nu0, nv2, out.dvv);
+  }
+}
+
+std::vector<BoundaryEdge> TensorSpace::boundary_edges() const {
+  std::vector<BoundaryEdge> edges;
+  for (Index ex = 0; ex < nex_; ++ex) edges.push_back({ex, 0, 0});
+  for (Index ey = 0; ey < ney_; ++ey) edges.push_back({nex_ - 1 + nex_ * ey, 1, 1});
+  for (Index ex = nex_ - 1; ex >= 0; --ex) edges.push_back({ex + nex_ * (ney_ - 1), 2, 2});
+  for (Index ey = ney_ - 1; ey >= 0; --ey) edges.push_back({nex_ * ey, 3, 3});
+  return edges;
+}
+
+Eigen::SparseMatrix<double> refinement_matrix(const TensorSpace& coarse, const TensorSpace& fine) {
+  const Eigen::SparseMatrix<double> ru = refinement_matrix(coarse.knots_u(), fine.knots_u());
+  const Eigen::SparseMatrix<double> rv = refinement_matrix(coarse.knots_v(), fine.knots_v());
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(ru.nonZeros() * rv.nonZeros()));
+  const Index nuf = fine.num_basis_u(), nuc = coarse.num_basis_u();
+  for (Index kv = 0; kv < rv.outerSize(); ++kv) {
+    for (Eigen::SparseMatrix<double>::InnerIterator itv(rv, kv); itv; ++itv) {
+      for (Index ku = 0; ku < ru.outerSize(); ++ku) {
+        for (Eigen::SparseMatrix<double>::InnerIterator itu(ru, ku); itu; ++itu) {
+          entries.emplace_back(itu.row() + nuf * itv.row(), itu.col() + nuc * itv.col(), itu.value() * itv.value());
+        }
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> r(fine.num_dofs(), coarse.num_dofs());
+  r.setFromTriplets(entries.begin(), entries.end());
+  return r;
+}
+
+}  // namespace iga::basis::bspline

@@ -1,0 +1,50 @@
+#pragma once
+// Tensor-product B-spline space on one patch, evaluated by Bézier extraction, batched over points.
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "basis/bspline/knot_vector.hpp"
+#include "basis/space.hpp"
+
+namespace iga::basis::bspline {
+
+/// Functions N_i(u) M_j(v), global dof i + nu * j. Elements are the products of the non-empty knot
+/// intervals, element index ex + nex * ey, each mapped to the unit square: reference (s, t) is
+/// u = a_x + s (b_x - a_x), v = a_y + t (b_y - a_y). Derivatives are with respect to (s, t).
+/// Boundary parts: 0 "v0" (v = v_min, side 0), 1 "u1" (u = u_max, side 1), 2 "v1" (side 2), 3 "u0" (side 3).
+class TensorSpace final : public Space {
+ public:
+  TensorSpace(KnotVector u, KnotVector v);
+
+  std::string name() const override { return "bspline"; }
+  Index num_dofs() const override { return nu_ * nv_; }
+  Index num_elements() const override { return nex_ * ney_; }
+  ElementKind kind(Index) const override { return {}; }
+  std::span<const Index> dofs(Index e) const override;
+  Index max_local_dofs() const override { return nloc_; }
+  void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
+  std::vector<BoundaryEdge> boundary_edges() const override;
+  std::vector<std::string> boundary_part_names() const override { return {"v0", "u1", "v1", "u0"}; }
+
+  const KnotVector& knots_u() const { return u_; }
+  const KnotVector& knots_v() const { return v_; }
+  Index num_basis_u() const { return nu_; }
+  Index num_basis_v() const { return nv_; }
+  Index num_elements_u() const { return nex_; }
+  Index num_elements_v() const { return ney_; }
+  /// Knot-parameter rectangle of element e: (u_a, u_b, v_a, v_b).
+  Eigen::Vector4d element_box(Index e) const;
+
+ private:
+  KnotVector u_, v_;
+  Index nu_ = 0, nv_ = 0, nex_ = 0, ney_ = 0, nloc_ = 0;
+  std::vector<Eigen::MatrixXd> cu_, cv_;  // extraction operators per interval
+  std::vector<Index> dofs_;               // nloc_ per element
+};
+
+/// Refinement matrix between two tensor spaces whose knot vectors are nested in each direction:
+/// kron(R_v, R_u), so fine control points = R * coarse control points.
+Eigen::SparseMatrix<double> refinement_matrix(const TensorSpace& coarse, const TensorSpace& fine);
+
+}  // namespace iga::basis::bspline

@@ -1,0 +1,48 @@
+#pragma once
+// The one interface every basis backend implements (DESIGN.md, "basis::Space").
+#include <Eigen/Core>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "basis/basis_values.hpp"
+#include "basis/element_kind.hpp"
+#include "core/types.hpp"
+
+namespace iga::basis {
+
+/// One side of an element that lies on the boundary of the domain.
+/// Sides of the unit square, traversed counter-clockwise with parameter t in [0,1]:
+///   0: (t, 0)   1: (1, t)   2: (1 - t, 1)   3: (0, 1 - t).
+/// `part` is the index of the boundary part (a name in Space::boundary_part_names()).
+struct BoundaryEdge {
+  Index element = 0;
+  int side = 0;
+  int part = 0;
+};
+
+/// Reference-domain point of side `side` at parameter t, and d(u,v)/dt (counter-clockwise).
+Eigen::Vector2d side_point(int side, double t);
+Eigen::Vector2d side_tangent(int side);
+
+class Space {
+ public:
+  virtual ~Space() = default;
+  virtual std::string name() const = 0;  ///< backend name as on the command line, e.g. "bspline"
+  virtual Index num_dofs() const = 0;
+  virtual Index num_elements() const = 0;
+  virtual ElementKind kind(Index e) const = 0;
+  /// Global dofs whose functions are non-zero on element e; the local order of evaluate()'s rows.
+  virtual std::span<const Index> dofs(Index e) const = 0;
+  /// The largest dofs(e).size() over all elements (for buffer sizes).
+  virtual Index max_local_dofs() const = 0;
+  /// Values (and, for derivatives >= 1 or 2, first or second parametric derivatives) of element e's local
+  /// functions at pts (2 × q, reference coordinates). Allocation-free when `out` already has the sizes.
+  virtual void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const = 0;
+  /// Element sides on the boundary of the domain, in a fixed order.
+  virtual std::vector<BoundaryEdge> boundary_edges() const = 0;
+  /// Names of the boundary parts that BoundaryEdge::part indexes.
+  virtual std::vector<std::string> boundary_part_names() const = 0;
+};
+
+}  // namespace iga::basis

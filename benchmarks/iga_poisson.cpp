@@ -1,0 +1,189 @@
+// iga-poisson: Poisson/Laplace on planar domains (Laplace–Beltrami on surfaces), -Δu + c u = f, with
+// strong Dirichlet and natural Neumann conditions. Thin: parses options and calls the library.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "basis/bspline/patches.hpp"
+#include "core/error.hpp"
+#include "fem/expression.hpp"
+#include "fem/poisson.hpp"
+#include "fem/problems.hpp"
+#include "fem/threads.hpp"
+#include "io/report.hpp"
+#include "io/vtu_writer.hpp"
+#include "mesh/obj_reader.hpp"
+#include "quadrature/rule_provider.hpp"
+#include "refine/uniform.hpp"
+
+namespace {
+
+struct Options {
+  std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, exact;
+  std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json";
+  int degree = 3, refine = 4, threads = 0, samples = 4;
+  double reaction = 0.0;
+  bool quiet = false;
+};
+
+std::vector<int> parse_parts(const std::string& list, const std::vector<std::string>& names) {
+  std::vector<int> parts;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    if (item.empty()) continue;
+    int found = -1;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (names[i] == item || std::to_string(i) == item) found = static_cast<int>(i);
+    }
+    if (found < 0) {
+      std::string known;
+      for (std::size_t i = 0; i < names.size(); ++i) known += (i ? ", " : "") + names[i];
+      throw iga::InputError("--neumann-boundary: no boundary part '" + item + "' (parts: " + known + ", or their indices)");
+    }
+    parts.push_back(found);
+  }
+  return parts;
+}
+
+int run(const Options& o) {
+  using namespace iga;
+  const auto t_start = std::chrono::steady_clock::now();
+  auto log = [&](const std::string& s) {
+    if (!o.quiet) std::cerr << "iga-poisson: " << s << std::endl;
+  };
+  if (o.threads > 0) fem::set_num_threads(o.threads);
+  if (o.basis != "bspline") {
+    throw UnsupportedError("--basis " + o.basis + ": not available in this build (available: bspline)");
+  }
+  // Geometry: a quad-grid control net from an OBJ file, or the embedded quarter annulus.
+  const basis::Geometry coarse = o.mesh.empty() ? basis::bspline::make_quarter_annulus(o.degree)
+                                                : basis::bspline::geometry_from_quad_grid(mesh::read_obj(o.mesh), o.degree, o.mesh);
+  const refine::Refinement refined = refine::refine_uniform(coarse, o.refine);
+  const basis::Geometry& geometry = refined.geometry;
+  const bool surface = geometry.dim() == 3;
+  const auto names = geometry.space().boundary_part_names();
+
+  // The problem: a built-in manufactured one, expressions, or both (expressions override).
+  fem::PoissonProblem problem;
+  problem.reaction = o.reaction;
+  std::string problem_name = o.problem;
+  if (problem_name.empty() && o.source.empty() && o.exact.empty()) problem_name = "sine";
+  std::shared_ptr<const fem::Function> builtin_exact;
+  if (!problem_name.empty()) {
+    if (surface) throw UnsupportedError("--problem " + problem_name + ": built-in problems are for planar domains; give --source and --exact for surfaces");
+    const fem::ManufacturedProblem mp = fem::manufactured_problem(problem_name, o.reaction);
+    problem.source = mp.source;
+    problem.exact = mp.exact;
+    problem.dirichlet = mp.exact;
+    builtin_exact = mp.exact;
+  }
+  if (!o.source.empty()) problem.source = std::make_shared<fem::Expression>(o.source, "--source");
+  if (!o.exact.empty()) {
+    problem.exact = std::make_shared<fem::Expression>(o.exact, "--exact");
+    if (o.dirichlet.empty()) problem.dirichlet = problem.exact;
+  }
+  if (!o.dirichlet.empty()) problem.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
+  if (!o.neumann.empty()) {
+    problem.neumann = std::make_shared<fem::Expression>(o.neumann, "--neumann", true);
+    problem.neumann_parts = parse_parts(o.neumann_boundary.empty() ? "" : o.neumann_boundary, names);
+    if (problem.neumann_parts.empty()) throw InputError("--neumann needs --neumann-boundary to say where (parts: v0,u1,v1,u0)");
+  } else if (!o.neumann_boundary.empty()) {
+    if (!problem.exact) throw InputError("--neumann-boundary needs --neumann data (or an exact solution)");
+    problem.neumann = fem::normal_flux(problem.exact);
+    problem.neumann_parts = parse_parts(o.neumann_boundary, names);
+  }
+  const int qp = o.degree + 1;
+  const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? "gauss:" + std::to_string(qp) : o.quadrature, qp);
+  const fem::SolverOptions solver{fem::parse_solver(o.solver)};
+
+  log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
+      std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
+  const fem::PoissonResult r = fem::solve_poisson(geometry, *rules, problem, solver);
+  log("assembly " + std::to_string(r.assembly_seconds) + " s, solve " + std::to_string(r.solve_seconds) + " s");
+
+  nlohmann::json j;
+  j["program"] = "iga-poisson";
+  j["basis"] = o.basis;
+  j["mesh"] = o.mesh.empty() ? "default:quarter-annulus" : o.mesh;
+  j["dimension"] = geometry.dim();
+  j["degree"] = o.degree;
+  j["refine"] = o.refine;
+  j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
+                  {"source", o.source}, {"dirichlet", o.dirichlet}, {"neumann", o.neumann},
+                  {"neumann_boundary", o.neumann_boundary}, {"exact", o.exact}, {"reaction", o.reaction}};
+  j["dofs"] = r.dofs;
+  j["free_dofs"] = r.free_dofs;
+  j["dirichlet_dofs"] = r.dirichlet_dofs;
+  j["elements"] = r.elements;
+  j["quadrature"] = rules->name();
+  j["quadrature_points"] = r.quadrature_points;
+  j["domain_measure"] = r.domain_measure;
+  j["threads"] = fem::num_threads();
+  j["pattern_seconds"] = r.pattern_seconds;
+  j["assembly_seconds"] = r.assembly_seconds;
+  j["solve_seconds"] = r.solve_seconds;
+  j["solver"] = r.solver;
+  j["solver_iterations"] = r.solver_iterations;
+  j["residual_norm"] = r.residual_norm;
+  j["l2_error"] = nullptr;
+  j["h1_error"] = nullptr;
+  if (r.errors) {
+    j["l2_error"] = r.errors->l2;
+    j["h1_error"] = r.errors->h1;
+    j["l2_error_relative"] = r.errors->l2 / r.errors->l2_exact;
+    j["h1_error_relative"] = r.errors->h1_exact > 0 ? nlohmann::json(r.errors->h1 / r.errors->h1_exact) : nlohmann::json(nullptr);
+    log("L2 error " + std::to_string(r.errors->l2) + ", H1 error " + std::to_string(r.errors->h1));
+  }
+  if (!o.vtu.empty() && o.vtu != "none") {
+    io::VtuOptions vo;
+    vo.samples = o.samples;
+    vo.exact = problem.exact;
+    io::write_vtu(o.vtu, geometry, r.u, vo);
+    j["vtu"] = o.vtu;
+    log("wrote " + o.vtu);
+  }
+  j["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  if (!o.json.empty() && o.json != "none") {
+    io::write_json(o.json, j);
+    log("wrote " + o.json);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"iga-poisson: solve -Δu + c u = f (Laplace–Beltrami on surfaces) with isogeometric elements"};
+  Options o;
+  app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline); default: the embedded quarter annulus")
+      ->check(CLI::ExistingFile);
+  app.add_option("--basis", o.basis, "basis backend")->check(CLI::IsMember({"bspline", "cc", "halfbox", "polyhedral"}))->capture_default_str();
+  app.add_option("--degree", o.degree, "polynomial degree per direction")->check(CLI::Range(1, 12))->capture_default_str();
+  app.add_option("--refine", o.refine, "uniform refinement steps (each halves every element)")->check(CLI::Range(0, 14))->capture_default_str();
+  std::string names;
+  for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
+  app.add_option("--problem", o.problem, "built-in manufactured problem (" + names + "); default sine when no --source/--exact");
+  app.add_option("--source", o.source, "f(x,y,z) in -Δu + c u = f (muparser expression)");
+  app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact, else 0");
+  app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)");
+  app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0 or 0..3)");
+  app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms");
+  app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_option("--quadrature", o.quadrature, "quadrature rule: gauss:P (P points per direction); default gauss:degree+1");
+  app.add_option("--solver", o.solver, "cholmod or cg")->capture_default_str();
+  app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(CLI::Range(1, 1024));
+  app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();
+  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(CLI::Range(2, 64))->capture_default_str();
+  app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
+  app.add_flag("--quiet", o.quiet, "no progress on stderr");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::cerr << "iga-poisson: error: " << e.what() << std::endl;
+    return 1;
+  }
+}

@@ -1,0 +1,56 @@
+#pragma once
+// The one element loop (DESIGN.md, "fem::Assembler"): OpenMP over the elements of one colour at a time,
+// thread-local buffers, basis and geometry evaluated once per element, local matrices as dense products,
+// one scatter into a precomputed sparsity pattern.
+#include <Eigen/Sparse>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "basis/geometry.hpp"
+#include "fem/assembly_plan.hpp"
+#include "fem/forms.hpp"
+#include "quadrature/rule_provider.hpp"
+
+namespace iga::fem {
+
+struct AssemblyStats {
+  Index quadrature_points = 0;  ///< points used over all elements
+  double measure = 0.0;         ///< sum of physical weights: the domain's area or surface area
+};
+
+class Assembler {
+ public:
+  /// Keeps references to geometry and rules (they must outlive the assembler). The plan is built lazily.
+  Assembler(const basis::Geometry& geometry, const quadrature::RuleProvider& rules);
+
+  const basis::Geometry& geometry() const { return geometry_; }
+  const quadrature::RuleProvider& rules() const { return rules_; }
+  const AssemblyPlan& plan() const;
+
+  /// A = sum of the bilinear forms, b = sum of the linear forms, in one loop over the elements.
+  /// A gets the plan's pattern; b has num_dofs entries. Deterministic for any thread count.
+  AssemblyStats assemble(std::span<const BilinearForm* const> bilinear, std::span<const LinearForm* const> linear,
+                         Eigen::SparseMatrix<double>& a, Eigen::VectorXd& b) const;
+
+  /// Boundary integrals over `edges` (serial; boundaries are small): a (num_dofs², may be null) and
+  /// b (num_dofs, may be null) are overwritten.
+  void assemble_boundary(std::span<const basis::BoundaryEdge> edges, const BoundaryBilinearForm* bilinear,
+                         const BoundaryLinearForm* linear, Eigen::SparseMatrix<double>* a,
+                         Eigen::VectorXd* b) const;
+
+  /// Sum over elements of `n` element quantities computed by f(ctx, out) (out has n entries, zeroed),
+  /// in parallel, reduced in element order (reproducible). For error norms and measures.
+  Eigen::VectorXd integrate(int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const;
+
+  /// Fills ctx for element e at its rule's points (basis with first derivatives, geometry, weights,
+  /// physical gradients).
+  void prepare(Index e, ElementContext& ctx) const;
+
+ private:
+  const basis::Geometry& geometry_;
+  const quadrature::RuleProvider& rules_;
+  mutable std::unique_ptr<AssemblyPlan> plan_;
+};
+
+}  // namespace iga::fem

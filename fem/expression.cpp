@@ -1,0 +1,84 @@
+#include "fem/expression.hpp"
+
+#include <muParser.h>
+
+#include <atomic>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include "core/error.hpp"
+
+namespace iga::fem {
+
+struct Expression::Evaluator {
+  mu::Parser parser;
+  double x = 0, y = 0, z = 0, nx = 0, ny = 0, nz = 0;
+
+  Evaluator(const std::string& text, bool allow_normal) {
+    parser.DefineConst("pi", std::numbers::pi);
+    parser.DefineConst("e", std::numbers::e);
+    parser.DefineFun("atan2", static_cast<double (*)(double, double)>(std::atan2));
+    parser.DefineFun("pow", static_cast<double (*)(double, double)>(std::pow));
+    parser.DefineVar("x", &x);
+    parser.DefineVar("y", &y);
+    parser.DefineVar("z", &z);
+    if (allow_normal) {
+      parser.DefineVar("nx", &nx);
+      parser.DefineVar("ny", &ny);
+      parser.DefineVar("nz", &nz);
+    }
+    parser.SetExpr(text);
+  }
+};
+
+namespace {
+std::atomic<std::uint64_t> next_id{1};
+}
+
+Expression::Expression(std::string text, std::string what, bool allow_normal)
+    : text_(std::move(text)), what_(std::move(what)), allow_normal_(allow_normal), id_(next_id++) {
+  if (text_.find_first_not_of(" \t") == std::string::npos) throw InputError(what_ + ": empty expression");
+  try {
+    Evaluator check(text_, allow_normal_);
+    check.parser.Eval();  // compiles; reports syntax errors and undefined variables
+  } catch (const mu::Parser::exception_type& e) {
+    throw InputError(what_ + ": '" + text_ + "': " + e.GetMsg());
+  }
+}
+
+Expression::~Expression() = default;
+
+Expression::Evaluator& Expression::evaluator() const {
+  thread_local std::unordered_map<std::uint64_t, std::unique_ptr<Evaluator>> cache;
+  auto& slot = cache[id_];
+  if (!slot) slot = std::make_unique<Evaluator>(text_, allow_normal_);
+  return *slot;
+}
+
+void Expression::values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const {
+  Evaluator& ev = evaluator();
+  out.resize(x.cols());
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    ev.x = x(0, k);
+    ev.y = x(1, k);
+    ev.z = x(2, k);
+    out(k) = ev.parser.Eval();
+  }
+}
+
+void Expression::values(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& n, Eigen::VectorXd& out) const {
+  Evaluator& ev = evaluator();
+  out.resize(x.cols());
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    ev.x = x(0, k);
+    ev.y = x(1, k);
+    ev.z = x(2, k);
+    ev.nx = n(0, k);
+    ev.ny = n(1, k);
+    ev.nz = n(2, k);
+    out(k) = ev.parser.Eval();
+  }
+}
+
+}  // namespace iga::fem

@@ -1,0 +1,109 @@
+#pragma once
+// Forms are small function objects that turn what the element loop evaluated into a local matrix or
+// vector (DESIGN.md: "a new PDE is a new form, not a new loop").
+#include <Eigen/Core>
+#include <memory>
+
+#include "basis/basis_values.hpp"
+#include "basis/geometry.hpp"
+#include "core/types.hpp"
+#include "fem/function.hpp"
+#include "quadrature/rule.hpp"
+
+namespace iga::fem {
+
+/// What the element loop has evaluated on one element at its quadrature points.
+struct ElementContext {
+  Index element = 0;
+  const quadrature::Rule* rule = nullptr;
+  basis::BasisValues basis;   ///< local functions (nloc × q) and parametric derivatives
+  basis::GeometryValues geo;  ///< physical points, Jacobian, measure, normal
+  Eigen::VectorXd weight;     ///< physical quadrature weights: rule weight × measure
+  Eigen::MatrixXd grad[3];    ///< physical (surface) gradient components of the local functions (nloc × q)
+  int dim = 2;                ///< 2 (planar: grad[2] unused) or 3
+};
+
+/// What the boundary loop has evaluated on one element side.
+struct BoundaryContext {
+  Index element = 0;
+  int side = 0;
+  basis::BasisValues basis;
+  basis::GeometryValues geo;
+  Eigen::VectorXd weight;     ///< rule weight × |dx/dt| (arc length)
+  Eigen::Matrix3Xd conormal;  ///< outward unit conormal: unit tangent × unit normal
+};
+
+class BilinearForm {
+ public:
+  virtual ~BilinearForm() = default;
+  /// local (nloc × nloc, zeroed by the caller) += the form's element matrix.
+  virtual void add(const ElementContext& ctx, Eigen::MatrixXd& local) const = 0;
+};
+
+class LinearForm {
+ public:
+  virtual ~LinearForm() = default;
+  virtual void add(const ElementContext& ctx, Eigen::VectorXd& local) const = 0;
+};
+
+class BoundaryBilinearForm {
+ public:
+  virtual ~BoundaryBilinearForm() = default;
+  virtual void add(const BoundaryContext& ctx, Eigen::MatrixXd& local) const = 0;
+};
+
+class BoundaryLinearForm {
+ public:
+  virtual ~BoundaryLinearForm() = default;
+  virtual void add(const BoundaryContext& ctx, Eigen::VectorXd& local) const = 0;
+};
+
+/// ∫ a ∇φ_i · ∇φ_j (a = 1 without coefficient); on surfaces the surface gradient (Laplace–Beltrami).
+class StiffnessForm final : public BilinearForm {
+ public:
+  explicit StiffnessForm(std::shared_ptr<const Function> coefficient = nullptr) : a_(std::move(coefficient)) {}
+  void add(const ElementContext& ctx, Eigen::MatrixXd& local) const override;
+
+ private:
+  std::shared_ptr<const Function> a_;
+};
+
+/// ∫ c φ_i φ_j with a constant c.
+class MassForm final : public BilinearForm {
+ public:
+  explicit MassForm(double c = 1.0) : c_(c) {}
+  void add(const ElementContext& ctx, Eigen::MatrixXd& local) const override;
+
+ private:
+  double c_;
+};
+
+/// ∫ f φ_i.
+class SourceForm final : public LinearForm {
+ public:
+  explicit SourceForm(std::shared_ptr<const Function> f) : f_(std::move(f)) {}
+  void add(const ElementContext& ctx, Eigen::VectorXd& local) const override;
+
+ private:
+  std::shared_ptr<const Function> f_;
+};
+
+/// ∫_Γ φ_i φ_j ds.
+class BoundaryMassForm final : public BoundaryBilinearForm {
+ public:
+  void add(const BoundaryContext& ctx, Eigen::MatrixXd& local) const override;
+};
+
+/// ∫_Γ g φ_i ds with g(x) (Dirichlet projection) or g(x, n) (Neumann flux, n the outward conormal).
+class BoundaryLoadForm final : public BoundaryLinearForm {
+ public:
+  explicit BoundaryLoadForm(std::shared_ptr<const Function> g) : g_(std::move(g)) {}
+  explicit BoundaryLoadForm(std::shared_ptr<const BoundaryFunction> g) : gn_(std::move(g)) {}
+  void add(const BoundaryContext& ctx, Eigen::VectorXd& local) const override;
+
+ private:
+  std::shared_ptr<const Function> g_;
+  std::shared_ptr<const BoundaryFunction> gn_;
+};
+
+}  // namespace iga::fem

@@ -1,0 +1,46 @@
+#pragma once
+// Scalar fields of the physical position, evaluated in batches: sources, boundary data, exact solutions.
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+
+namespace iga::fem {
+
+/// A scalar function u(x) of physical position x = (x, y, z) (z = 0 on planar domains).
+class Function {
+ public:
+  virtual ~Function() = default;
+  /// out(k) = u(x.col(k)). `out` is resized to x.cols().
+  virtual void values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const = 0;
+  /// out.col(k) = grad u(x.col(k)) (3 × q). The default is a fourth-order central difference with step
+  /// fd_step() in each coordinate; override when the gradient is known in closed form.
+  virtual void gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const;
+  /// True when gradients() is exact (closed form), false when it is a finite difference.
+  virtual bool exact_gradient() const { return false; }
+  /// Step of the default finite-difference gradient (physical units); 1e-3 suits domains of size ~1.
+  double fd_step() const { return fd_step_; }
+  void set_fd_step(double h) { fd_step_ = h; }
+
+ private:
+  double fd_step_ = 1e-3;
+};
+
+using PointFunction = std::function<double(const Eigen::Vector3d&)>;
+using PointGradient = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+
+/// A Function from a point-wise callable, with an optional closed-form gradient.
+std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad = {});
+/// The constant c (gradient 0).
+std::shared_ptr<Function> constant_function(double c);
+
+/// Boundary data that may depend on the outward unit (co)normal n: g(x, n), evaluated in batches.
+class BoundaryFunction {
+ public:
+  virtual ~BoundaryFunction() = default;
+  virtual void values(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& n, Eigen::VectorXd& out) const = 0;
+};
+
+/// The normal flux grad u · n of a function with a gradient (for manufactured Neumann data).
+std::shared_ptr<BoundaryFunction> normal_flux(std::shared_ptr<const Function> u);
+
+}  // namespace iga::fem

@@ -1,0 +1,23 @@
+#pragma once
+// Built-in manufactured problems on planar domains: -Δu + c u = f with u known in closed form.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fem/function.hpp"
+
+namespace iga::fem {
+
+struct ManufacturedProblem {
+  std::string name;
+  std::string description;
+  std::shared_ptr<Function> exact;   ///< u, with its closed-form gradient
+  std::shared_ptr<Function> source;  ///< f = -Δu + c u
+};
+
+/// Names: "sine" (sin(πx) sin(πy)), "harmonic" (e^x sin y), "linear" (1 + 2x - 3y, the patch test),
+/// "poly" (x²y + y³ - xy). InputError for an unknown name, listing the known ones.
+ManufacturedProblem manufactured_problem(const std::string& name, double reaction = 0.0);
+std::vector<std::string> manufactured_problem_names();
+
+}  // namespace iga::fem

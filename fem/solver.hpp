@@ -1,0 +1,34 @@
+#pragma once
+// Sparse symmetric positive definite solves: CHOLMOD (supernodal Cholesky, through Eigen) or Eigen's
+// conjugate gradient with an incomplete Cholesky preconditioner.
+#include <Eigen/Sparse>
+#include <string>
+
+#include "core/types.hpp"
+
+namespace iga::fem {
+
+enum class SolverKind { Cholmod, ConjugateGradient };
+
+struct SolverOptions {
+  SolverKind kind = SolverKind::Cholmod;
+  double tolerance = 1e-12;   ///< CG: relative residual
+  Index max_iterations = 0;   ///< CG: 0 = 10 × size
+};
+
+struct SolveResult {
+  Eigen::VectorXd x;
+  std::string solver;          ///< "cholmod-supernodal-llt" or "cg-ichol"
+  double residual_norm = 0.0;  ///< ||A x - b|| / ||b|| (absolute when b = 0)
+  Index iterations = 0;        ///< CG iterations (0 for the direct solver)
+  double seconds = 0.0;        ///< factorisation + solve
+};
+
+/// Solves A x = b for symmetric positive definite A (both triangles stored). NumericalError when the
+/// matrix is not positive definite or CG does not converge.
+SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b, const SolverOptions& options);
+
+/// "cholmod" or "cg"; InputError otherwise.
+SolverKind parse_solver(const std::string& name);
+
+}  // namespace iga::fem

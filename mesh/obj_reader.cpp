@@ -1,0 +1,193 @@
+#include "mesh/obj_reader.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace iga::mesh {
+
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// Whitespace-separated tokens of one line.
+class Tokens {
+ public:
+  explicit Tokens(std::string_view text) : rest_(text) {}
+  std::string_view next() {
+    std::size_t i = 0;
+    while (i < rest_.size() && is_blank(rest_[i])) {
+      ++i;
+    }
+    std::size_t j = i;
+    while (j < rest_.size() && !is_blank(rest_[j])) {
+      ++j;
+    }
+    const std::string_view token = rest_.substr(i, j - i);
+    rest_.remove_prefix(j);
+    return token;
+  }
+
+ private:
+  std::string_view rest_;
+};
+
+// Error for the current line of the current file.
+struct Where {
+  const std::string& name;
+  long line;
+  [[noreturn]] void fail(const std::string& reason) const { throw InputError(name, line, reason); }
+};
+
+double parse_number(std::string_view token, const Where& where) {
+  std::string_view digits = token;
+  if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-' && digits[1] != '+') {
+    digits.remove_prefix(1);
+  }
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    where.fail("number '" + std::string(token) + "' is out of range");
+  }
+  if (ec != std::errc{} || end != digits.data() + digits.size()) {
+    where.fail("malformed number '" + std::string(token) + "'");
+  }
+  return value;
+}
+
+// Parses an integer field of a face vertex; false if it is not a plain (signed) integer.
+bool parse_integer(std::string_view text, Index& value) {
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') {
+    text.remove_prefix(1);
+  }
+  if (text.empty()) {
+    return false;
+  }
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc{} && end == text.data() + text.size();
+}
+
+// One face vertex token (i, i/j, i//k, i/j/k): returns the 0-based vertex index it refers to.
+Index parse_face_vertex(std::string_view token, Index num_vertices, const Where& where) {
+  const auto malformed = [&] { where.fail("malformed face vertex '" + std::string(token) + "'"); };
+  const std::size_t slash = token.find('/');
+  const std::string_view vertex_part = token.substr(0, slash);
+  Index unused = 0;
+  if (slash != std::string_view::npos) {
+    const std::string_view rest = token.substr(slash + 1);
+    const std::size_t slash2 = rest.find('/');
+    if (slash2 == std::string_view::npos) {
+      if (!parse_integer(rest, unused)) {  // i/j
+        malformed();
+      }
+    } else {
+      const std::string_view texture_part = rest.substr(0, slash2);
+      const std::string_view normal_part = rest.substr(slash2 + 1);
+      if ((!texture_part.empty() && !parse_integer(texture_part, unused)) || !parse_integer(normal_part, unused)) {
+        malformed();  // i/j/k or i//k
+      }
+    }
+  }
+  Index index = 0;
+  if (!parse_integer(vertex_part, index)) {
+    malformed();
+  }
+  if (index == 0) {
+    where.fail("vertex index 0 is invalid (OBJ indices start at 1)");
+  }
+  const Index resolved = index > 0 ? index - 1 : num_vertices + index;
+  if (resolved < 0 || resolved >= num_vertices) {
+    where.fail("vertex index " + std::to_string(index) + " out of range (" + std::to_string(num_vertices) +
+               " vertices defined)");
+  }
+  return resolved;
+}
+
+}  // namespace
+
+PolyMesh read_obj(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in.is_open()) {
+    throw InputError(path, 0, "cannot open file");
+  }
+  return parse_obj(in, path);
+}
+
+PolyMesh parse_obj(std::istream& in, const std::string& name) {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::vector<Index>> faces;
+  std::vector<long> face_lines;
+  std::vector<Index> sorted;
+  std::string line;
+  long line_number = 0;
+
+  while (std::getline(in, line)) {
+    ++line_number;
+    const Where where{name, line_number};
+    std::string_view text(line);
+    if (const std::size_t hash = text.find('#'); hash != std::string_view::npos) {
+      text = text.substr(0, hash);
+    }
+    Tokens tokens(text);
+    const std::string_view keyword = tokens.next();
+
+    if (keyword == "v") {
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();
+      int count = 0;
+      for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
+        const double value = parse_number(t, where);
+        if (count < 3) {
+          if (!std::isfinite(value)) {
+            where.fail("non-finite coordinate '" + std::string(t) + "'");
+          }
+          p[count] = value;
+        }
+        ++count;
+      }
+      if (count < 3) {
+        where.fail("vertex has " + std::to_string(count) + " coordinates; a vertex needs x y z");
+      }
+      points.push_back(p);
+    } else if (keyword == "f") {
+      const Index num_vertices = static_cast<Index>(points.size());
+      std::vector<Index> face;
+      for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
+        face.push_back(parse_face_vertex(t, num_vertices, where));
+      }
+      if (face.size() < 3) {
+        where.fail("face has " + std::to_string(face.size()) + " vertices; a face needs at least 3");
+      }
+      sorted.assign(face.begin(), face.end());
+      std::sort(sorted.begin(), sorted.end());
+      if (const auto dup = std::adjacent_find(sorted.begin(), sorted.end()); dup != sorted.end()) {
+        where.fail("vertex " + std::to_string(*dup + 1) + " appears more than once in the face");
+      }
+      faces.push_back(std::move(face));
+      face_lines.push_back(line_number);
+    }
+    // Every other statement (vt, vn, g, o, s, usemtl, mtllib, l, p, ...) is not needed for the mesh.
+  }
+  if (in.bad()) {
+    throw InputError(name, line_number, "read error");
+  }
+  if (points.empty()) {
+    throw InputError(name, 0, "file has no vertices");
+  }
+  if (faces.empty()) {
+    throw InputError(name, 0, "file has no faces");
+  }
+  try {
+    return PolyMesh::build(std::move(points), std::move(faces));
+  } catch (const TopologyError& e) {
+    const Index f = e.face();
+    const long at_line = (f >= 0 && f < static_cast<Index>(face_lines.size())) ? face_lines[static_cast<std::size_t>(f)] : 0;
+    throw InputError(name, at_line, e.describe(1));
+  }
+}
+
+}  // namespace iga::mesh

@@ -1,0 +1,43 @@
+#pragma once
+// Picks the quadrature rule of an element from its kind (DESIGN.md, "quadrature::RuleProvider").
+#include <memory>
+#include <string>
+
+#include "basis/element_kind.hpp"
+#include "quadrature/rule.hpp"
+
+namespace iga::quadrature {
+
+class RuleProvider {
+ public:
+  virtual ~RuleProvider() = default;
+  /// The rule for elements of this kind. The reference stays valid for the provider's lifetime; calls are
+  /// thread-safe. Throws UnsupportedError for kinds the provider does not handle.
+  virtual const Rule& rule(const basis::ElementKind& kind) const = 0;
+  /// The rule on [0,1] for element sides (boundary integrals).
+  virtual const Rule1D& edge_rule() const = 0;
+  /// The specification string, e.g. "gauss:4".
+  virtual std::string name() const = 0;
+};
+
+/// p × p Gauss–Legendre on every quad element (regular or not), the collapsed p × p rule on triangles,
+/// p points on sides.
+class Gauss final : public RuleProvider {
+ public:
+  explicit Gauss(int points_per_direction);
+  const Rule& rule(const basis::ElementKind& kind) const override;
+  const Rule1D& edge_rule() const override { return line_; }
+  std::string name() const override { return "gauss:" + std::to_string(p_); }
+  int points_per_direction() const { return p_; }
+
+ private:
+  int p_;
+  Rule1D line_;
+  Rule quad_, triangle_;
+};
+
+/// Makes a provider from a specification: "gauss:P". `default_points` is used for a bare "gauss".
+/// Throws InputError naming the specification when it is not understood.
+std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int default_points);
+
+}  // namespace iga::quadrature

@@ -1,0 +1,32 @@
+#include "refine/uniform.hpp"
+
+#include <memory>
+
+#include "basis/bspline/knot_insertion.hpp"
+#include "basis/bspline/tensor_space.hpp"
+#include "core/error.hpp"
+
+namespace iga::refine {
+
+Refinement refine_uniform(const basis::Geometry& geometry, int steps) {
+  if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
+  const auto* tensor = dynamic_cast<const basis::bspline::TensorSpace*>(&geometry.space());
+  const Index n = geometry.space().num_dofs();
+  Eigen::SparseMatrix<double> identity(n, n);
+  identity.setIdentity();
+  if (steps == 0) return {geometry, identity};
+  if (!tensor) {
+    throw UnsupportedError("uniform refinement of a '" + geometry.space().name() + "' space is not implemented");
+  }
+  basis::bspline::KnotVector u = tensor->knots_u(), v = tensor->knots_v();
+  for (int s = 0; s < steps; ++s) {
+    u = basis::bspline::insert_midpoints(u);
+    v = basis::bspline::insert_midpoints(v);
+  }
+  auto fine = std::make_shared<const basis::bspline::TensorSpace>(u, v);
+  Eigen::SparseMatrix<double> r = basis::bspline::refinement_matrix(*tensor, *fine);
+  Eigen::MatrixXd cp = r * geometry.control_points();
+  return {basis::Geometry(fine, std::move(cp)), std::move(r)};
+}
+
+}  // namespace iga::refine

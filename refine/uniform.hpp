@@ -1,0 +1,19 @@
+#pragma once
+// Uniform h-refinement of a geometry: a new space, the same map, and the prolongation between them.
+#include <Eigen/Sparse>
+
+#include "basis/geometry.hpp"
+
+namespace iga::refine {
+
+struct Refinement {
+  basis::Geometry geometry;                  ///< the refined geometry (the same map)
+  Eigen::SparseMatrix<double> prolongation;  ///< fine coefficients = prolongation × coarse coefficients
+};
+
+/// `steps` rounds of uniform refinement. For tensor-product B-spline spaces: the midpoint of every
+/// non-empty knot interval is inserted in both directions (Oslo knot insertion), so each element splits
+/// into four. UnsupportedError for other spaces (named). steps = 0 returns the geometry with the identity.
+Refinement refine_uniform(const basis::Geometry& geometry, int steps);
+
+}  // namespace iga::refine

@@ -1,0 +1,139 @@
+// iga-poisson end to end: the .vtu read back with VTK's XML reader, the JSON report, one clear error line.
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+struct Outcome {
+  int code;
+  std::string err;
+};
+
+class IgaPoisson : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("iga_poisson_test_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  Outcome run(const std::string& args) {
+    const fs::path err = dir_ / "stderr.txt";
+    const std::string cmd = "cd '" + dir_.string() + "' && '" + IGA_POISSON_EXE + "' " + args + " 2> '" + err.string() + "' > /dev/null";
+    const int status = std::system(cmd.c_str());
+    std::ifstream in(err);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return {WEXITSTATUS(status), ss.str()};
+  }
+  nlohmann::json report(const std::string& name = "result.json") {
+    std::ifstream in(dir_ / name);
+    return nlohmann::json::parse(in);
+  }
+  fs::path dir_;
+};
+
+void expect_finite_array(vtkDataArray* a, int components) {
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(a->GetNumberOfComponents(), components);
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
+    for (int c = 0; c < components; ++c) ASSERT_TRUE(std::isfinite(a->GetComponent(i, c))) << a->GetName();
+  }
+}
+}  // namespace
+
+TEST_F(IgaPoisson, DefaultRunWritesVtuAndJson) {
+  const Outcome r = run("--quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = report();
+  for (const char* key : {"basis", "mesh", "dofs", "elements", "quadrature_points", "l2_error", "h1_error",
+                          "domain_measure", "assembly_seconds", "solve_seconds", "solver", "residual_norm"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["basis"], "bspline");
+  EXPECT_NEAR(j["domain_measure"].get<double>(), 2.5, 1e-12);  // the quarter annulus, closed form
+  EXPECT_LT(j["l2_error"].get<double>(), 1e-3);
+  EXPECT_LT(j["residual_norm"].get<double>(), 1e-10);
+
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName((dir_ / "result.vtu").c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  const long elements = j["elements"].get<long>();
+  EXPECT_EQ(grid->GetNumberOfCells(), elements * 9);  // 4×4 samples per element: 3×3 cells
+  EXPECT_EQ(grid->GetNumberOfPoints(), elements * 16);
+  expect_finite_array(grid->GetPointData()->GetArray("u"), 1);
+  expect_finite_array(grid->GetPointData()->GetArray("exact"), 1);
+  expect_finite_array(grid->GetPointData()->GetArray("error"), 1);
+  expect_finite_array(grid->GetPointData()->GetArray("grad_u"), 3);
+  expect_finite_array(grid->GetCellData()->GetArray("element"), 1);
+  expect_finite_array(grid->GetCellData()->GetArray("element_kind"), 1);
+  // The error array is u - exact at the samples: small for this converged run.
+  double range[2];
+  grid->GetPointData()->GetArray("error")->GetRange(range);
+  EXPECT_LT(std::max(std::abs(range[0]), std::abs(range[1])), 1e-2);
+}
+
+TEST_F(IgaPoisson, ExpressionsNeumannAndMesh) {
+  // A 4×3 quad grid of [0,2]×[0,1] as an OBJ control net, degree 2: the patch test u = 1 + x - 2y with
+  // Neumann data from an expression in the normal on two sides.
+  std::ofstream obj(dir_ / "grid.obj");
+  for (int j = 0; j <= 3; ++j) for (int i = 0; i <= 4; ++i) obj << "v " << 0.5 * i << " " << j / 3.0 << " 0\n";
+  for (int j = 0; j < 3; ++j) for (int i = 0; i < 4; ++i) {
+    const int a = 1 + i + 5 * j;
+    obj << "f " << a << " " << a + 1 << " " << a + 6 << " " << a + 5 << "\n";
+  }
+  obj.close();
+  const Outcome r = run("--quiet --mesh grid.obj --degree 2 --refine 2 --source 0 --exact '1 + x - 2*y' "
+                    "--neumann 'nx - 2*ny' --neumann-boundary u1,v1 --threads 1 --json out.json --vtu none");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = report("out.json");
+  EXPECT_EQ(j["threads"], 1);
+  EXPECT_NEAR(j["domain_measure"].get<double>(), 2.0, 1e-12);
+  EXPECT_LT(j["l2_error"].get<double>(), 1e-9);  // linear functions are in every isoparametric space
+  EXPECT_FALSE(fs::exists(dir_ / "result.vtu"));
+}
+
+TEST_F(IgaPoisson, NoExactGivesNullErrors) {
+  const Outcome r = run("--quiet --source 1 --dirichlet 0 --refine 2 --vtu none");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = report();
+  EXPECT_TRUE(j["l2_error"].is_null());
+  EXPECT_TRUE(j["h1_error"].is_null());
+}
+
+TEST_F(IgaPoisson, BadInputGivesOneClearLine) {
+  std::ofstream(dir_ / "bad.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 7\n";
+  struct Case {
+    std::string args, needle;
+  };
+  const std::vector<Case> cases = {
+      {"--mesh bad.obj", "bad.obj:4:"},
+      {"--source 'sin(x'", "--source"},
+      {"--quadrature simpson:3", "simpson"},
+      {"--problem nope", "nope"},
+      {"--basis cc", "cc"},
+      {"--neumann-boundary top", "top"},
+      {"--degree 1", "degree"},
+  };
+  for (const Case& c : cases) {
+    const Outcome r = run("--vtu none --json none " + c.args);
+    EXPECT_NE(r.code, 0) << c.args;
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
+  }
+}

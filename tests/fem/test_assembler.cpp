@@ -1,0 +1,102 @@
+// The element loop: closed-form element matrices, the sparsity pattern and colouring, reproducibility.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "basis/bspline/patches.hpp"
+#include "fem/assembler.hpp"
+#include "fem/threads.hpp"
+#include "quadrature/rule_provider.hpp"
+#include "refine/uniform.hpp"
+
+using namespace iga;
+
+// Bilinear (Q1) element on the unit square, dofs (0,0),(1,0),(0,1),(1,1): the textbook stiffness matrix
+// (1/6)[4 -1 -1 -2; -1 4 -2 -1; -1 -2 4 -1; -2 -1 -1 4] and mass matrix (1/36)[4 2 2 1; 2 4 1 2; 2 1 4 2; 1 2 2 4].
+TEST(Assembler, BilinearElementMatricesInClosedForm) {
+  const basis::Geometry g = basis::bspline::make_rectangle(1);
+  const quadrature::Gauss rules(2);
+  const fem::Assembler assembler(g, rules);
+  const fem::StiffnessForm k;
+  const fem::MassForm m;
+  const std::vector<const fem::BilinearForm*> bk{&k}, bm{&m};
+  Eigen::SparseMatrix<double> a;
+  Eigen::VectorXd b;
+  assembler.assemble(bk, {}, a, b);
+  Eigen::Matrix4d ks, ms;
+  ks << 4, -1, -1, -2, -1, 4, -2, -1, -1, -2, 4, -1, -2, -1, -1, 4;
+  ms << 4, 2, 2, 1, 2, 4, 1, 2, 2, 1, 4, 2, 1, 2, 2, 4;
+  EXPECT_LE((Eigen::MatrixXd(a) - ks / 6.0).cwiseAbs().maxCoeff(), 1e-15);
+  const fem::AssemblyStats stats = assembler.assemble(bm, {}, a, b);
+  EXPECT_LE((Eigen::MatrixXd(a) - ms / 36.0).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_NEAR(stats.measure, 1.0, 1e-15);
+  EXPECT_EQ(stats.quadrature_points, 4);
+}
+
+// On a stretched rectangle [0,2]×[0,1] the Q1 stiffness scales as (hy/hx) K_xx + (hx/hy) K_yy.
+TEST(Assembler, StretchedElement) {
+  const basis::Geometry g = basis::bspline::make_rectangle(1, 0.0, 2.0, 0.0, 1.0);
+  const quadrature::Gauss rules(2);
+  const fem::Assembler assembler(g, rules);
+  const fem::StiffnessForm k;
+  const std::vector<const fem::BilinearForm*> bk{&k};
+  Eigen::SparseMatrix<double> a;
+  Eigen::VectorXd b;
+  assembler.assemble(bk, {}, a, b);
+  // K_xx = (1/6)[2 -2 1 -1; -2 2 -1 1; 1 -1 2 -2; -1 1 -2 2], K_yy likewise with y.
+  Eigen::Matrix4d kxx, kyy;
+  kxx << 2, -2, 1, -1, -2, 2, -1, 1, 1, -1, 2, -2, -1, 1, -2, 2;
+  kyy << 2, 1, -2, -1, 1, 2, -1, -2, -2, -1, 2, 1, -1, -2, 1, 2;
+  const Eigen::Matrix4d expected = (0.5 * kxx + 2.0 * kyy) / 6.0;
+  EXPECT_LE((Eigen::MatrixXd(a) - expected).cwiseAbs().maxCoeff(), 1e-15);
+}
+
+TEST(AssemblyPlan, PatternAndColouring) {
+  const basis::Geometry g = refine::refine_uniform(basis::bspline::make_quarter_annulus(3), 3).geometry;
+  const fem::AssemblyPlan plan = fem::make_assembly_plan(g.space());
+  const basis::Space& s = g.space();
+  // 8×8 elements, degree 3: 11×11 dofs; interior dofs couple with 7×7 others.
+  EXPECT_EQ(plan.pattern.rows(), 121);
+  // 1D: functions i, j of 11 couple when |i - j| <= 3: 11·7 - 2·(3+2+1) = 65 pairs; 2D: 65^2.
+  EXPECT_EQ(plan.pattern.nonZeros(), 65 * 65);
+  Index total = 0;
+  for (const auto& colour : plan.colors) {
+    std::set<Index> used;
+    for (Index e : colour) {
+      for (Index d : s.dofs(e)) EXPECT_TRUE(used.insert(d).second) << "colour shares dof " << d;
+    }
+    total += static_cast<Index>(colour.size());
+  }
+  EXPECT_EQ(total, s.num_elements());
+  // Greedy colouring of a tensor mesh needs (p+1)^2 = 16 colours.
+  EXPECT_EQ(plan.colors.size(), 16u);
+  // Symmetric pattern.
+  const Eigen::SparseMatrix<double> t = plan.pattern.transpose();
+  EXPECT_EQ(t.nonZeros(), plan.pattern.nonZeros());
+  for (Index j = 0; j < t.outerSize(); ++j) {
+    EXPECT_EQ(t.outerIndexPtr()[j + 1], plan.pattern.outerIndexPtr()[j + 1]);
+  }
+}
+
+// Assembly sums each entry in colour order: the same bits for 1 and 2 threads.
+TEST(Assembler, ReproducibleForAnyThreadCount) {
+  const basis::Geometry g = refine::refine_uniform(basis::bspline::make_quarter_annulus(3), 4).geometry;
+  const quadrature::Gauss rules(4);
+  const fem::StiffnessForm k;
+  const fem::SourceForm f(fem::make_function([](const Eigen::Vector3d& x) { return std::sin(x(0)) + x(1); }));
+  const std::vector<const fem::BilinearForm*> bk{&k};
+  const std::vector<const fem::LinearForm*> lf{&f};
+  const int before = fem::num_threads();
+  Eigen::SparseMatrix<double> a1, a2;
+  Eigen::VectorXd b1, b2;
+  fem::set_num_threads(1);
+  fem::Assembler(g, rules).assemble(bk, lf, a1, b1);
+  fem::set_num_threads(2);
+  fem::Assembler(g, rules).assemble(bk, lf, a2, b2);
+  fem::set_num_threads(before);
+  ASSERT_EQ(a1.nonZeros(), a2.nonZeros());
+  for (Index k2 = 0; k2 < a1.nonZeros(); ++k2) EXPECT_EQ(a1.valuePtr()[k2], a2.valuePtr()[k2]);
+  EXPECT_EQ((b1 - b2).cwiseAbs().maxCoeff(), 0.0);
+  // Rows of a stiffness matrix sum to zero (constants are in the kernel).
+  EXPECT_LE((a1 * Eigen::VectorXd::Ones(a1.cols())).cwiseAbs().maxCoeff(), 1e-12);
+}

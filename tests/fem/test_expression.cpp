@@ -1,0 +1,73 @@
+// muparser expressions: values, constants, normals, errors that name the option, threads.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <thread>
+#include <vector>
+
+#include "core/error.hpp"
+#include "fem/expression.hpp"
+
+using namespace iga;
+
+TEST(Expression, EvaluatesInBatches) {
+  const fem::Expression e("sin(pi*x)*cos(y) + z^2 + atan2(y, x) + pow(2, 3)", "--source");
+  Eigen::Matrix3Xd x(3, 2);
+  x << 0.25, 1.0, 0.5, 2.0, 3.0, -1.0;
+  Eigen::VectorXd v;
+  e.values(x, v);
+  for (int k = 0; k < 2; ++k) {
+    const double ex = std::sin(M_PI * x(0, k)) * std::cos(x(1, k)) + x(2, k) * x(2, k) + std::atan2(x(1, k), x(0, k)) + 8;
+    EXPECT_NEAR(v(k), ex, 1e-14);
+  }
+}
+
+TEST(Expression, NormalVariablesAndFiniteDifferenceGradient) {
+  const fem::Expression e("x*nx + y*ny", "--neumann", true);
+  Eigen::Matrix3Xd x(3, 1), n(3, 1);
+  x << 2, 3, 0;
+  n << 0.6, 0.8, 0;
+  Eigen::VectorXd v;
+  e.values(x, n, v);
+  EXPECT_NEAR(v(0), 2 * 0.6 + 3 * 0.8, 1e-15);
+  // The default gradient is a fourth-order difference: exact for cubics up to rounding.
+  const fem::Expression c("x^3 - 2*x*y^2 + z", "--exact");
+  Eigen::Matrix3Xd g;
+  c.gradients(x, g);
+  EXPECT_NEAR(g(0, 0), 3 * 4 - 2 * 9, 1e-9);
+  EXPECT_NEAR(g(1, 0), -4 * 2 * 3, 1e-9);
+  EXPECT_NEAR(g(2, 0), 1, 1e-9);
+}
+
+TEST(Expression, ErrorsNameTheOption) {
+  try {
+    fem::Expression("sin(x", "--source");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--source"), std::string::npos);
+  }
+  EXPECT_THROW(fem::Expression("x + w", "--exact"), InputError);       // unknown variable
+  EXPECT_THROW(fem::Expression("x + nx", "--dirichlet"), InputError);  // normals only for Neumann data
+  EXPECT_THROW(fem::Expression("  ", "--source"), InputError);
+}
+
+TEST(Expression, ThreadSafe) {
+  const fem::Expression e("x*y", "--source");
+  Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Random(3, 1000);
+  Eigen::VectorXd ref;
+  e.values(x, ref);
+  std::atomic<int> bad{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t) {
+    threads.emplace_back([&] {
+      for (int k = 0; k < 50; ++k) {
+        Eigen::VectorXd v;
+        e.values(x, v);
+        if ((v - ref).cwiseAbs().maxCoeff() != 0.0) ++bad;
+      }
+    });
+  }
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(bad.load(), 0);
+}
