@@ -26,47 +26,55 @@ void Geometry::evaluate(Index e, const BasisValues& basis, GeometryValues& out, 
   const auto dofs = space_->dofs(e);
   const Index n = static_cast<Index>(dofs.size());
   const Index q = basis.value.cols();
-  // Gather the element's control points (3 × n; z = 0 for planar geometries).
-  thread_local Eigen::Matrix3Xd local;
-  local.resize(3, n);
+  // Gather the element's control points (n × 3, z = 0 for planar geometries); x = P^T N as inner products
+  // of contiguous columns.
+  thread_local Eigen::MatrixX3d local;
+  local.resize(n, 3);
   const int d = dim();
   for (Index a = 0; a < n; ++a) {
-    local(0, a) = control_points_(dofs[a], 0);
-    local(1, a) = control_points_(dofs[a], 1);
-    local(2, a) = d == 3 ? control_points_(dofs[a], 2) : 0.0;
+    local(a, 0) = control_points_(dofs[a], 0);
+    local(a, 1) = control_points_(dofs[a], 1);
+    local(a, 2) = d == 3 ? control_points_(dofs[a], 2) : 0.0;
   }
-  out.x.noalias() = local * basis.value;
-  out.xu.noalias() = local * basis.du;
-  out.xv.noalias() = local * basis.dv;
-  out.measure.resize(q);
+  out.x.noalias() = local.transpose().lazyProduct(basis.value);
+  out.xu.noalias() = local.transpose().lazyProduct(basis.du);
+  out.xv.noalias() = local.transpose().lazyProduct(basis.dv);
+  // Metric G = J^T J, its determinant |x_u × x_v|^2 (no cancellation), and T = J G^{-1}, for all points
+  // at once (row-wise array expressions over the q columns).
+  const auto xu = out.xu.array();
+  const auto xv = out.xv.array();
   out.normal.resize(3, q);
+  out.normal.row(0) = xu.row(1) * xv.row(2) - xu.row(2) * xv.row(1);
+  out.normal.row(1) = xu.row(2) * xv.row(0) - xu.row(0) * xv.row(2);
+  out.normal.row(2) = xu.row(0) * xv.row(1) - xu.row(1) * xv.row(0);
+  thread_local Eigen::RowVectorXd g11, g12, g22, det;
+  g11 = out.xu.colwise().squaredNorm();
+  g22 = out.xv.colwise().squaredNorm();
+  g12 = (xu * xv).colwise().sum().matrix();
+  det = out.normal.colwise().squaredNorm();
+  out.measure = det.transpose().cwiseSqrt();
+  const bool valid = (out.measure.array() > 0.0).all() && out.measure.allFinite();
+  if (!valid && check) {
+    Index k = 0;
+    while (out.measure(k) > 0.0 && std::isfinite(out.measure(k))) ++k;
+    std::ostringstream msg;
+    msg << "element " << e << ": degenerate geometry map (surface element " << out.measure(k)
+        << ") at quadrature point " << k;
+    throw NumericalError(msg.str());
+  }
+  out.normal.array().rowwise() /= out.measure.transpose().array();
   out.tu.resize(3, q);
   out.tv.resize(3, q);
-  for (Index k = 0; k < q; ++k) {
-    const Eigen::Vector3d xu = out.xu.col(k);
-    const Eigen::Vector3d xv = out.xv.col(k);
-    const double g11 = xu.squaredNorm();
-    const double g12 = xu.dot(xv);
-    const double g22 = xv.squaredNorm();
-    const Eigen::Vector3d c = xu.cross(xv);
-    const double det = c.squaredNorm();  // = g11 g22 - g12^2, without cancellation
-    const double m = std::sqrt(det);
-    out.measure(k) = m;
-    if (!(m > 0.0) || !std::isfinite(m)) {
-      if (check) {
-        std::ostringstream msg;
-        msg << "element " << e << ": degenerate geometry map (surface element " << m << ") at quadrature point "
-            << k;
-        throw NumericalError(msg.str());
+  out.tu = (xu.rowwise() * (g22.array() / det.array()) - xv.rowwise() * (g12.array() / det.array())).matrix();
+  out.tv = (xv.rowwise() * (g11.array() / det.array()) - xu.rowwise() * (g12.array() / det.array())).matrix();
+  if (!valid) {
+    for (Index k = 0; k < q; ++k) {
+      if (!(out.measure(k) > 0.0) || !std::isfinite(out.measure(k))) {
+        out.normal.col(k).setZero();
+        out.tu.col(k).setZero();
+        out.tv.col(k).setZero();
       }
-      out.normal.col(k).setZero();
-      out.tu.col(k).setZero();
-      out.tv.col(k).setZero();
-      continue;
     }
-    out.normal.col(k) = c / m;
-    out.tu.col(k) = (g22 * xu - g12 * xv) / det;
-    out.tv.col(k) = (g11 * xv - g12 * xu) / det;
   }
 }
 

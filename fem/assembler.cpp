@@ -39,7 +39,13 @@ Assembler::Assembler(const basis::Geometry& geometry, const quadrature::RuleProv
     : geometry_(geometry), rules_(rules) {}
 
 const AssemblyPlan& Assembler::plan() const {
-  if (!plan_) plan_ = std::make_unique<AssemblyPlan>(make_assembly_plan(geometry_.space()));
+  if (!plan_) {
+    // Swap, not move: Eigen 3.4's SparseMatrix has no move constructor and would be copied.
+    AssemblyPlan made = make_assembly_plan(geometry_.space());
+    plan_ = std::make_unique<AssemblyPlan>();
+    plan_->pattern.swap(made.pattern);
+    plan_->colors.swap(made.colors);
+  }
   return *plan_;
 }
 
@@ -51,9 +57,11 @@ void Assembler::prepare(Index e, ElementContext& ctx) const {
   space.evaluate(e, ctx.rule->points, 1, ctx.basis);
   geometry_.evaluate(e, ctx.basis, ctx.geo);
   ctx.weight = ctx.rule->weights.cwiseProduct(ctx.geo.measure);
+  const Eigen::Index q = ctx.rule->size();
+  ctx.grad.resize(ctx.basis.value.rows(), ctx.dim * q);
   for (int c = 0; c < ctx.dim; ++c) {
-    ctx.grad[c] = ctx.basis.du.array().rowwise() * ctx.geo.tu.row(c).array() +
-                  ctx.basis.dv.array().rowwise() * ctx.geo.tv.row(c).array();
+    ctx.grad.middleCols(c * q, q) = ctx.basis.du.array().rowwise() * ctx.geo.tu.row(c).array() +
+                                    ctx.basis.dv.array().rowwise() * ctx.geo.tv.row(c).array();
   }
 }
 
@@ -73,6 +81,7 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
   std::vector<ElementContext> contexts(static_cast<std::size_t>(omp_get_max_threads()));
   std::vector<Eigen::MatrixXd> mats(contexts.size());
   std::vector<Eigen::VectorXd> vecs(contexts.size());
+  std::vector<std::vector<Index>> orders(contexts.size());
   for (const std::vector<Index>& colour : p.colors) {
     parallel_for(static_cast<Index>(colour.size()), [&](Index i) {
       const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
@@ -89,13 +98,21 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
       for (const LinearForm* form : linear) form->add(ctx, f);
       measure[static_cast<std::size_t>(e)] = ctx.weight.sum();
       points[static_cast<std::size_t>(e)] = ctx.rule->size();
-      // Scatter: no other element of this colour touches these rows or columns.
+      // Scatter: no other element of this colour touches these rows or columns. Rows are visited in
+      // ascending dof order, so each column is one forward walk through its sorted row indices.
+      std::vector<Index>& order = orders[t];
+      order.resize(static_cast<std::size_t>(nloc));
+      for (Index al = 0; al < nloc; ++al) order[static_cast<std::size_t>(al)] = al;
+      if (!std::is_sorted(dofs.begin(), dofs.end())) {
+        std::sort(order.begin(), order.end(), [&](Index x, Index y) { return dofs[x] < dofs[y]; });
+      }
+      const int first_row = static_cast<int>(dofs[order[0]]);
       for (Index bl = 0; bl < nloc; ++bl) {
         const Index j = dofs[bl];
-        const int* first = inner + outer[j];
-        const int* last = inner + outer[j + 1];
-        for (Index al = 0; al < nloc; ++al) {
-          const int* pos = std::lower_bound(first, last, static_cast<int>(dofs[al]));
+        const int* pos = std::lower_bound(inner + outer[j], inner + outer[j + 1], first_row);
+        for (Index al : order) {
+          const int row = static_cast<int>(dofs[al]);
+          while (*pos < row) ++pos;
           values[pos - inner] += k(al, bl);
         }
         b(j) += f(bl);

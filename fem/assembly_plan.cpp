@@ -23,45 +23,49 @@ AssemblyPlan make_assembly_plan(const basis::Space& space) {
       for (Index d : space.dofs(e)) elems[static_cast<std::size_t>(pos[d]++)] = e;
     }
   }
-  // Columns: the union of the dofs of the elements around each dof.
-  std::vector<std::vector<int>> cols(static_cast<std::size_t>(n));
-#pragma omp parallel
-  {
-    std::vector<char> mark(static_cast<std::size_t>(n), 0);
-#pragma omp for schedule(static)
-    for (Index j = 0; j < n; ++j) {
-      auto& col = cols[static_cast<std::size_t>(j)];
-      for (Index k = start[j]; k < start[j + 1]; ++k) {
-        for (Index d : space.dofs(elems[static_cast<std::size_t>(k)])) {
-          if (!mark[d]) {
-            mark[d] = 1;
-            col.push_back(static_cast<int>(d));
-          }
-        }
-      }
-      for (int d : col) mark[d] = 0;
-      std::sort(col.begin(), col.end());
-    }
-  }
-  std::size_t nnz = 0;
-  for (const auto& c : cols) nnz += c.size();
-  if (nnz > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-    throw UnsupportedError("sparsity pattern with " + std::to_string(nnz) + " entries exceeds 32-bit indices");
-  }
+  // Columns: the union of the dofs of the elements around each dof. Two passes (count, then fill in
+  // place) with a per-thread stamp array, so nothing is allocated per column.
   AssemblyPlan plan;
   Eigen::SparseMatrix<double>& a = plan.pattern;
   a.resize(n, n);
-  a.resizeNonZeros(static_cast<Index>(nnz));
+  std::vector<Index> count(static_cast<std::size_t>(n), 0);
+  auto for_each_neighbour = [&](Index j, std::vector<Index>& stamp, auto&& visit) {
+    for (Index k = start[j]; k < start[j + 1]; ++k) {
+      for (Index d : space.dofs(elems[static_cast<std::size_t>(k)])) {
+        if (stamp[static_cast<std::size_t>(d)] != j) {
+          stamp[static_cast<std::size_t>(d)] = j;
+          visit(d);
+        }
+      }
+    }
+  };
+#pragma omp parallel
+  {
+    std::vector<Index> stamp(static_cast<std::size_t>(n), -1);
+#pragma omp for schedule(static)
+    for (Index j = 0; j < n; ++j) for_each_neighbour(j, stamp, [&](Index) { ++count[static_cast<std::size_t>(j)]; });
+  }
+  Index nnz = 0;
+  for (Index j = 0; j < n; ++j) nnz += count[static_cast<std::size_t>(j)];
+  if (nnz > static_cast<Index>(std::numeric_limits<int>::max())) {
+    throw UnsupportedError("sparsity pattern with " + std::to_string(nnz) + " entries exceeds 32-bit indices");
+  }
+  a.resizeNonZeros(nnz);
   int* outer = a.outerIndexPtr();
   int* inner = a.innerIndexPtr();
   outer[0] = 0;
-  for (Index j = 0; j < n; ++j) {
-    const auto& c = cols[static_cast<std::size_t>(j)];
-    std::copy(c.begin(), c.end(), inner + outer[j]);
-    outer[j + 1] = outer[j] + static_cast<int>(c.size());
+  for (Index j = 0; j < n; ++j) outer[j + 1] = outer[j] + static_cast<int>(count[static_cast<std::size_t>(j)]);
+#pragma omp parallel
+  {
+    std::vector<Index> stamp(static_cast<std::size_t>(n), -1);
+#pragma omp for schedule(static)
+    for (Index j = 0; j < n; ++j) {
+      int* pos = inner + outer[j];
+      for_each_neighbour(j, stamp, [&](Index d) { *pos++ = static_cast<int>(d); });
+      std::sort(inner + outer[j], pos);
+    }
   }
   std::fill(a.valuePtr(), a.valuePtr() + nnz, 0.0);
-  cols.clear();
 
   // Greedy colouring: an element takes the smallest colour no element sharing a dof with it has.
   std::vector<int> color(static_cast<std::size_t>(ne), -1);

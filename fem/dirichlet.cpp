@@ -47,12 +47,9 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
 ReducedSystem eliminate(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b,
                         const DirichletConditions& bc) {
   const Index n = a.rows();
+  if (!a.isCompressed()) throw InputError("eliminate: the matrix must be compressed");
   std::vector<Index> map(static_cast<std::size_t>(n), 0);
-  Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
-  for (std::size_t k = 0; k < bc.dofs.size(); ++k) {
-    map[static_cast<std::size_t>(bc.dofs[k])] = -1;
-    g(bc.dofs[k]) = bc.values(static_cast<Index>(k));
-  }
+  for (Index d : bc.dofs) map[static_cast<std::size_t>(d)] = -1;
   ReducedSystem sys;
   for (Index i = 0; i < n; ++i) {
     if (map[static_cast<std::size_t>(i)] == 0) {
@@ -61,30 +58,43 @@ ReducedSystem eliminate(const Eigen::SparseMatrix<double>& a, const Eigen::Vecto
     }
   }
   const Index nf = static_cast<Index>(sys.free.size());
-  // b_f - A_fd g_d, and A_ff copied column by column (a is compressed, column-major).
-  const Eigen::VectorXd ag = a * g;
+  // b_f - A_fd g_d: only the Dirichlet columns contribute (A is symmetric, column-major).
+  Eigen::VectorXd rhs = b;
+  for (std::size_t k = 0; k < bc.dofs.size(); ++k) {
+    const double gk = bc.values(static_cast<Index>(k));
+    if (gk == 0.0) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, bc.dofs[k]); it; ++it) rhs(it.row()) -= it.value() * gk;
+  }
   sys.b.resize(nf);
-  for (Index k = 0; k < nf; ++k) sys.b(k) = b(sys.free[static_cast<std::size_t>(k)]) - ag(sys.free[static_cast<std::size_t>(k)]);
+  for (Index k = 0; k < nf; ++k) sys.b(k) = rhs(sys.free[static_cast<std::size_t>(k)]);
+  // A_ff, column by column in two passes (count, fill), both parallel over columns.
   Eigen::SparseMatrix<double>& r = sys.a;
   r.resize(nf, nf);
   std::vector<int> outer(static_cast<std::size_t>(nf + 1), 0);
+  const int* a_outer = a.outerIndexPtr();
+  const int* a_inner = a.innerIndexPtr();
+  const double* a_values = a.valuePtr();
+#pragma omp parallel for schedule(static)
   for (Index k = 0; k < nf; ++k) {
+    const Index j = sys.free[static_cast<std::size_t>(k)];
     int count = 0;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(a, sys.free[static_cast<std::size_t>(k)]); it; ++it) {
-      if (map[static_cast<std::size_t>(it.row())] >= 0) {
-        ++count;
-      }
-    }
-    outer[static_cast<std::size_t>(k + 1)] = outer[static_cast<std::size_t>(k)] + count;
+    for (int p = a_outer[j]; p < a_outer[j + 1]; ++p) count += map[static_cast<std::size_t>(a_inner[p])] >= 0;
+    outer[static_cast<std::size_t>(k + 1)] = count;
   }
+  for (Index k = 0; k < nf; ++k) outer[static_cast<std::size_t>(k + 1)] += outer[static_cast<std::size_t>(k)];
   r.resizeNonZeros(outer.back());
   std::copy(outer.begin(), outer.end(), r.outerIndexPtr());
+  int* r_inner = r.innerIndexPtr();
+  double* r_values = r.valuePtr();
+#pragma omp parallel for schedule(static)
   for (Index k = 0; k < nf; ++k) {
+    const Index j = sys.free[static_cast<std::size_t>(k)];
     int pos = outer[static_cast<std::size_t>(k)];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(a, sys.free[static_cast<std::size_t>(k)]); it; ++it) {
-      if (map[static_cast<std::size_t>(it.row())] >= 0) {
-        r.innerIndexPtr()[pos] = static_cast<int>(map[static_cast<std::size_t>(it.row())]);
-        r.valuePtr()[pos] = it.value();
+    for (int p = a_outer[j]; p < a_outer[j + 1]; ++p) {
+      const Index m = map[static_cast<std::size_t>(a_inner[p])];
+      if (m >= 0) {
+        r_inner[pos] = static_cast<int>(m);
+        r_values[pos] = a_values[p];
         ++pos;
       }
     }

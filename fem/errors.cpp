@@ -12,7 +12,7 @@ ErrorNorms compute_errors(const Assembler& assembler, const Eigen::VectorXd& u, 
     for (std::size_t a = 0; a < dofs.size(); ++a) local(static_cast<Index>(a)) = u(dofs[a]);
     const Eigen::VectorXd uh = ctx.basis.value.transpose() * local;
     Eigen::Matrix3Xd gh = Eigen::Matrix3Xd::Zero(3, uh.size());
-    for (int c = 0; c < ctx.dim; ++c) gh.row(c) = (ctx.grad[c].transpose() * local).transpose();
+    for (int c = 0; c < ctx.dim; ++c) gh.row(c) = (ctx.grad_component(c).transpose() * local).transpose();
     Eigen::VectorXd ue;
     Eigen::Matrix3Xd ge;
     exact.values(ctx.geo.x, ue);

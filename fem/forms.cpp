@@ -3,6 +3,7 @@
 namespace iga::fem {
 
 void StiffnessForm::add(const ElementContext& ctx, Eigen::MatrixXd& local) const {
+  // sum_c G_c W G_c^T as one product: [G_0 .. G_dim-1] diag(w, .., w) [G_0 .. G_dim-1]^T.
   thread_local Eigen::VectorXd w;
   thread_local Eigen::MatrixXd scaled;
   if (a_) {
@@ -11,10 +12,12 @@ void StiffnessForm::add(const ElementContext& ctx, Eigen::MatrixXd& local) const
   } else {
     w = ctx.weight;
   }
+  const Eigen::Index q = ctx.num_points();
+  scaled.resize(ctx.grad.rows(), ctx.grad.cols());
   for (int c = 0; c < ctx.dim; ++c) {
-    scaled = ctx.grad[c].array().rowwise() * w.transpose().array();
-    local.noalias() += scaled * ctx.grad[c].transpose();
+    scaled.middleCols(c * q, q) = ctx.grad.middleCols(c * q, q).array().rowwise() * w.transpose().array();
   }
+  local.noalias() += scaled * ctx.grad.transpose();
 }
 
 void MassForm::add(const ElementContext& ctx, Eigen::MatrixXd& local) const {

@@ -19,8 +19,14 @@ struct ElementContext {
   basis::BasisValues basis;   ///< local functions (nloc × q) and parametric derivatives
   basis::GeometryValues geo;  ///< physical points, Jacobian, measure, normal
   Eigen::VectorXd weight;     ///< physical quadrature weights: rule weight × measure
-  Eigen::MatrixXd grad[3];    ///< physical (surface) gradient components of the local functions (nloc × q)
-  int dim = 2;                ///< 2 (planar: grad[2] unused) or 3
+  /// Physical (surface) gradients of the local functions, nloc × (dim·q): columns c·q .. c·q+q-1 hold
+  /// component c at the q points (one block per component, so a stiffness matrix is one dense product).
+  Eigen::MatrixXd grad;
+  int dim = 2;  ///< number of gradient components stored: 2 (planar) or 3 (surface)
+
+  Eigen::Index num_points() const { return weight.size(); }
+  /// Component c of the gradients (nloc × q).
+  auto grad_component(int c) const { return grad.middleCols(c * num_points(), num_points()); }
 };
 
 /// What the boundary loop has evaluated on one element side.

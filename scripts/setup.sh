@@ -9,7 +9,7 @@ jobs="${IGA_JOBS:-$(nproc)}"
 
 packages=(
   build-essential cmake
-  libeigen3-dev libsuitesparse-dev libnlopt-cxx-dev libosd-dev libvtk9-dev
+  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnlopt-cxx-dev libosd-dev libvtk9-dev
   libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev
 )
 missing=()

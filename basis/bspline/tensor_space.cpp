@@ -43,21 +43,29 @@ void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives
   const Index ex = e % nex_, ey = e / nex_;
   const int pu = u_.degree(), pv = v_.degree();
   const Index q = pts.cols();
-  // 1D Bernstein values at the points, then the element's B-splines by extraction: N = C B.
-  thread_local Eigen::MatrixXd bu, bu1, bu2, bv, bv1, bv2, nu0, nu1, nu2, nv0, nv1, nv2;
-  bernstein(pu, pts.row(0), derivatives, bu, &bu1, &bu2);
-  bernstein(pv, pts.row(1), derivatives, bv, &bv1, &bv2);
+  // 1D Bernstein values at the points (cached per thread: quadrature evaluates every element at the same
+  // reference points), then the element's B-splines by extraction: N = C B.
+  struct Cache {
+    Eigen::Matrix2Xd pts;
+    int pu = -1, pv = -1, derivatives = -1;
+    Eigen::MatrixXd bu[3], bv[3];
+  };
+  thread_local Cache cache;
+  if (cache.pu != pu || cache.pv != pv || cache.derivatives < derivatives || cache.pts.cols() != q ||
+      cache.pts != pts) {
+    cache.pts = pts;
+    cache.pu = pu;
+    cache.pv = pv;
+    cache.derivatives = derivatives;
+    bernstein(pu, pts.row(0), derivatives, cache.bu[0], &cache.bu[1], &cache.bu[2]);
+    bernstein(pv, pts.row(1), derivatives, cache.bv[0], &cache.bv[1], &cache.bv[2]);
+  }
+  thread_local Eigen::MatrixXd nu[3], nv[3];
   const Eigen::MatrixXd& cu = cu_[static_cast<std::size_t>(ex)];
   const Eigen::MatrixXd& cv = cv_[static_cast<std::size_t>(ey)];
-  nu0.noalias() = cu * bu;
-  nv0.noalias() = cv * bv;
-  if (derivatives >= 1) {
-    nu1.noalias() = cu * bu1;
-    nv1.noalias() = cv * bv1;
-  }
-  if (derivatives >= 2) {
-    nu2.noalias() = cu * bu2;
-    nv2.noalias() = cv * bv2;
+  for (int d = 0; d <= derivatives; ++d) {
+    nu[d].noalias() = cu.lazyProduct(cache.bu[d]);  // small products: no GEMM blocking
+    nv[d].noalias() = cv.lazyProduct(cache.bv[d]);
   }
   // Tensor products, local index a + (pu+1) b.
   auto tensor = [&](const Eigen::MatrixXd& fu, const Eigen::MatrixXd& fv, Eigen::MatrixXd& dst) {
@@ -66,15 +74,15 @@ void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives
       dst.middleRows(b * (pu + 1), pu + 1) = fu.array().rowwise() * fv.row(b).array();
     }
   };
-  tensor(nu0, nv0, out.value);
+  tensor(nu[0], nv[0], out.value);
   if (derivatives >= 1) {
-    tensor(nu1, nv0, out.du);
-    tensor(nu0, nv1, out.dv);
+    tensor(nu[1], nv[0], out.du);
+    tensor(nu[0], nv[1], out.dv);
   }
   if (derivatives >= 2) {
-    tensor(nu2, nv0, out.duu);
-    tensor(nu1, nv1, out.duv);
-    tensor(nu0, nv2, out.dvv);
+    tensor(nu[2], nv[0], out.duu);
+    tensor(nu[1], nv[1], out.duv);
+    tensor(nu[0], nv[2], out.dvv);
   }
 }
 
