@@ -2,6 +2,7 @@
 // strong Dirichlet and natural Neumann conditions. Thin: parses options and calls the library.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -102,7 +103,12 @@ int run(const Options& o) {
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
       std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
   const fem::PoissonResult r = fem::solve_poisson(geometry, *rules, problem, solver);
-  log("assembly " + std::to_string(r.assembly_seconds) + " s, solve " + std::to_string(r.solve_seconds) + " s");
+  auto fmt = [](double v) {
+    std::ostringstream s;
+    s << std::setprecision(4) << v;
+    return s.str();
+  };
+  log("assembly " + fmt(r.assembly_seconds) + " s, solve " + fmt(r.solve_seconds) + " s (" + r.solver + ")");
 
   nlohmann::json j;
   j["program"] = "iga-poisson";
@@ -135,7 +141,7 @@ int run(const Options& o) {
     j["h1_error"] = r.errors->h1;
     j["l2_error_relative"] = r.errors->l2 / r.errors->l2_exact;
     j["h1_error_relative"] = r.errors->h1_exact > 0 ? nlohmann::json(r.errors->h1 / r.errors->h1_exact) : nlohmann::json(nullptr);
-    log("L2 error " + std::to_string(r.errors->l2) + ", H1 error " + std::to_string(r.errors->h1));
+    log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
   }
   if (!o.vtu.empty() && o.vtu != "none") {
     io::VtuOptions vo;

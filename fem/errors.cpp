@@ -8,13 +8,13 @@ ErrorNorms compute_errors(const Assembler& assembler, const Eigen::VectorXd& u, 
   const basis::Space& space = assembler.geometry().space();
   const Eigen::VectorXd sums = assembler.integrate(4, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
     const auto dofs = space.dofs(ctx.element);
-    Eigen::VectorXd local(static_cast<Index>(dofs.size()));
+    thread_local Eigen::VectorXd local, uh, ue;
+    thread_local Eigen::Matrix3Xd gh, ge;
+    local.resize(static_cast<Index>(dofs.size()));
     for (std::size_t a = 0; a < dofs.size(); ++a) local(static_cast<Index>(a)) = u(dofs[a]);
-    const Eigen::VectorXd uh = ctx.basis.value.transpose() * local;
-    Eigen::Matrix3Xd gh = Eigen::Matrix3Xd::Zero(3, uh.size());
-    for (int c = 0; c < ctx.dim; ++c) gh.row(c) = (ctx.grad_component(c).transpose() * local).transpose();
-    Eigen::VectorXd ue;
-    Eigen::Matrix3Xd ge;
+    uh.noalias() = ctx.basis.value.transpose() * local;
+    gh.setZero(3, uh.size());
+    for (int c = 0; c < ctx.dim; ++c) gh.row(c) = local.transpose() * ctx.grad_component(c);
     exact.values(ctx.geo.x, ue);
     exact.gradients(ctx.geo.x, ge);
     for (Index k = 0; k < ge.cols(); ++k) {
