@@ -22,11 +22,11 @@
 namespace {
 
 struct Options {
-  std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, exact;
+  std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json";
   int degree = 3, refine = 4, threads = 0, samples = 4;
   double reaction = 0.0;
-  bool quiet = false;
+  bool quiet = false, mean_zero = false;
 };
 
 std::vector<int> parse_parts(const std::string& list, const std::vector<std::string>& names) {
@@ -89,13 +89,19 @@ int run(const Options& o) {
   if (!o.dirichlet.empty()) problem.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
   if (!o.neumann.empty()) {
     problem.neumann = std::make_shared<fem::Expression>(o.neumann, "--neumann", true);
-    problem.neumann_parts = parse_parts(o.neumann_boundary.empty() ? "" : o.neumann_boundary, names);
-    if (problem.neumann_parts.empty()) throw InputError("--neumann needs --neumann-boundary to say where (parts: v0,u1,v1,u0)");
-  } else if (!o.neumann_boundary.empty()) {
-    if (!problem.exact) throw InputError("--neumann-boundary needs --neumann data (or an exact solution)");
+    problem.neumann_parts = parse_parts(o.neumann_boundary, names);
+    if (problem.neumann_parts.empty() && o.neumann_where.empty()) {
+      throw InputError("--neumann needs --neumann-boundary or --neumann-where to say where");
+    }
+  } else if (!o.neumann_boundary.empty() || !o.neumann_where.empty()) {
+    if (!problem.exact) throw InputError("--neumann-boundary/--neumann-where need --neumann data (or an exact solution)");
     problem.neumann = fem::normal_flux(problem.exact);
     problem.neumann_parts = parse_parts(o.neumann_boundary, names);
   }
+  if (!o.neumann_where.empty()) {
+    problem.neumann_where = std::make_shared<fem::Expression>(o.neumann_where, "--neumann-where");
+  }
+  problem.mean_zero = o.mean_zero;
   const int qp = o.degree + 1;
   const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? "gauss:" + std::to_string(qp) : o.quadrature, qp);
   const fem::SolverOptions solver{fem::parse_solver(o.solver)};
@@ -119,7 +125,8 @@ int run(const Options& o) {
   j["refine"] = o.refine;
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
                   {"source", o.source}, {"dirichlet", o.dirichlet}, {"neumann", o.neumann},
-                  {"neumann_boundary", o.neumann_boundary}, {"exact", o.exact}, {"reaction", o.reaction}};
+                  {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where}, {"exact", o.exact},
+                  {"reaction", o.reaction}, {"mean_zero", o.mean_zero}};
   j["dofs"] = r.dofs;
   j["free_dofs"] = r.free_dofs;
   j["dirichlet_dofs"] = r.dirichlet_dofs;
@@ -134,6 +141,10 @@ int run(const Options& o) {
   j["solver"] = r.solver;
   j["solver_iterations"] = r.solver_iterations;
   j["residual_norm"] = r.residual_norm;
+  j["dirichlet_edges"] = r.dirichlet_edges;
+  j["neumann_edges"] = r.neumann_edges;
+  j["mean_zero"] = r.mean_zero;
+  if (r.mean_zero) j["compatibility_defect"] = r.compatibility_defect;
   j["l2_error"] = nullptr;
   j["h1_error"] = nullptr;
   if (r.errors) {
@@ -176,6 +187,8 @@ int main(int argc, char** argv) {
   app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact, else 0");
   app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)");
   app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0 or 0..3)");
+  app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data, e.g. 'x > 0.999'");
+  app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms");
   app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(CLI::NonNegativeNumber)->capture_default_str();
   app.add_option("--quadrature", o.quadrature, "quadrature rule: gauss:P (P points per direction); default gauss:degree+1");

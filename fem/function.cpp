@@ -69,6 +69,24 @@ std::shared_ptr<Function> constant_function(double c) {
                        [](const Eigen::Vector3d&) -> Eigen::Vector3d { return Eigen::Vector3d::Zero(); });
 }
 
+std::shared_ptr<Function> shifted_function(std::shared_ptr<const Function> u, double c) {
+  class Shifted final : public Function {
+   public:
+    Shifted(std::shared_ptr<const Function> u, double c) : u_(std::move(u)), c_(c) {}
+    void values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const override {
+      u_->values(x, out);
+      out.array() += c_;
+    }
+    void gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const override { u_->gradients(x, out); }
+    bool exact_gradient() const override { return u_->exact_gradient(); }
+
+   private:
+    std::shared_ptr<const Function> u_;
+    double c_;
+  };
+  return std::make_shared<Shifted>(std::move(u), c);
+}
+
 std::shared_ptr<BoundaryFunction> normal_flux(std::shared_ptr<const Function> u) {
   return std::make_shared<NormalFlux>(std::move(u));
 }

@@ -33,6 +33,9 @@ std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad = {}
 /// The constant c (gradient 0).
 std::shared_ptr<Function> constant_function(double c);
 
+/// u + c (same gradient).
+std::shared_ptr<Function> shifted_function(std::shared_ptr<const Function> u, double c);
+
 /// Boundary data that may depend on the outward unit (co)normal n: g(x, n), evaluated in batches.
 class BoundaryFunction {
  public:

@@ -1,9 +1,11 @@
 #include "quadrature/rule_provider.hpp"
 
 #include <charconv>
+#include <vector>
 
 #include "core/error.hpp"
 #include "quadrature/gauss_legendre.hpp"
+#include "quadrature/per_tile.hpp"
 #include "quadrature/tensor_rule.hpp"
 
 namespace iga::quadrature {
@@ -19,21 +21,37 @@ const Rule& Gauss::rule(const basis::ElementKind& kind) const {
   return kind.shape == basis::Shape::Quad ? quad_ : triangle_;
 }
 
+namespace {
+// Whole number from a piece of a specification; InputError naming the specification otherwise.
+int parse_count(const std::string& text, const std::string& spec, const std::string& expected) {
+  int value = 0;
+  const auto res = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || res.ec != std::errc() || res.ptr != text.data() + text.size()) {
+    throw InputError("quadrature '" + spec + "': expected " + expected);
+  }
+  return value;
+}
+}  // namespace
+
 std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int default_points) {
-  const auto colon = spec.find(':');
-  const std::string method = spec.substr(0, colon);
-  if (method == "gauss") {
-    int p = default_points;
-    if (colon != std::string::npos) {
-      const std::string arg = spec.substr(colon + 1);
-      const auto res = std::from_chars(arg.data(), arg.data() + arg.size(), p);
-      if (res.ec != std::errc() || res.ptr != arg.data() + arg.size()) {
-        throw InputError("quadrature '" + spec + "': expected gauss:P with P a whole number of points per direction");
-      }
-    }
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const auto colon = spec.find(':', start);
+    parts.push_back(spec.substr(start, colon - start));
+    if (colon == std::string::npos) break;
+    start = colon + 1;
+  }
+  const std::string& method = parts[0];
+  if (method == "gauss" && parts.size() <= 2) {
+    const int p = parts.size() == 2 ? parse_count(parts[1], spec, "gauss:P with P points per direction") : default_points;
     return std::make_unique<Gauss>(p);
   }
-  throw InputError("quadrature '" + spec + "': unknown method '" + method + "' (known: gauss:P)");
+  if (method == "tiles" && parts.size() == 3) {
+    const std::string expected = "tiles:P:L with P points per direction and L levels";
+    return std::make_unique<PerTile>(parse_count(parts[1], spec, expected), parse_count(parts[2], spec, expected));
+  }
+  throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L)");
 }
 
 }  // namespace iga::quadrature

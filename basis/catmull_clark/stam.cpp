@@ -1,0 +1,1 @@
+#include "basis/catmull_clark/stam.hpp"

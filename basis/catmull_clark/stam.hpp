@@ -1,0 +1,2 @@
+#pragma once
+// Placeholder: Stam's evaluation of a Catmull–Clark patch at an interior extraordinary vertex.

@@ -1,0 +1,53 @@
+#include "quadrature/per_tile.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "quadrature/gauss_legendre.hpp"
+#include "quadrature/tensor_rule.hpp"
+
+namespace iga::quadrature {
+
+namespace {
+// Appends the square rule `square` mapped affinely onto [u0, u0 + h] × [v0, v0 + h].
+void append_mapped(const Rule& square, double u0, double v0, double h, Rule& out, Eigen::Index& k) {
+  for (Eigen::Index i = 0; i < square.size(); ++i, ++k) {
+    out.points(0, k) = u0 + h * square.points(0, i);
+    out.points(1, k) = v0 + h * square.points(1, i);
+    out.weights(k) = h * h * square.weights(i);
+  }
+}
+}  // namespace
+
+Rule tiled_rule(int p, int levels) {
+  if (levels < 1 || levels > 50) throw InputError("tiled rule: levels must be 1..50, got " + std::to_string(levels));
+  const Rule1D line = gauss_legendre(p);
+  const Rule square = tensor_rule(line, line);
+  Rule out;
+  const Eigen::Index n = square.size() * (3 * levels + 1);
+  out.points.resize(2, n);
+  out.weights.resize(n);
+  Eigen::Index k = 0;
+  for (int l = 1; l <= levels; ++l) {
+    const double h = std::ldexp(1.0, -l);  // 2^-l
+    append_mapped(square, h, 0.0, h, out, k);  // Ω_{1,l}
+    append_mapped(square, h, h, h, out, k);    // Ω_{2,l}
+    append_mapped(square, 0.0, h, h, out, k);  // Ω_{3,l}
+  }
+  append_mapped(square, 0.0, 0.0, std::ldexp(1.0, -levels), out, k);  // the remaining corner square
+  return out;
+}
+
+PerTile::PerTile(int points_per_direction, int levels)
+    : gauss_(points_per_direction), levels_(levels), tiled_(tiled_rule(points_per_direction, levels)) {}
+
+const Rule& PerTile::rule(const basis::ElementKind& kind) const {
+  if (kind.shape == basis::Shape::Quad && kind.family == basis::Family::Irregular) return tiled_;
+  return gauss_.rule(kind);
+}
+
+std::string PerTile::name() const {
+  return "tiles:" + std::to_string(gauss_.points_per_direction()) + ":" + std::to_string(levels_);
+}
+
+}  // namespace iga::quadrature

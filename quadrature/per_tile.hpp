@@ -1,0 +1,34 @@
+#pragma once
+// Per-tile Gauss rules for elements at an extraordinary vertex (thesis §4.2.1, option 2).
+#include <string>
+
+#include "quadrature/rule_provider.hpp"
+
+namespace iga::quadrature {
+
+/// The tiles of an irregular element with its extraordinary vertex at (0,0) (Stam's parameterisation):
+/// level l >= 1 holds Ω_{1,l} = [2^-l, 2^(1-l)] × [0, 2^-l], Ω_{2,l} = [2^-l, 2^(1-l)]²,
+/// Ω_{3,l} = [0, 2^-l] × [2^-l, 2^(1-l)]; the functions are polynomial on each tile.
+/// Returns the rule with a p × p Gauss rule on each of the three tiles of levels 1..levels and one p × p
+/// Gauss rule on the remaining corner square [0, 2^-levels]² (where the functions are not polynomial; its
+/// points are interior, never on the vertex, and its weights complete the element's area). 3·levels·p² + p²
+/// points; weights sum to 1.
+Rule tiled_rule(int p, int levels);
+
+/// PerTile(p, levels): the tiled rule on Irregular quads, p × p Gauss on all other quads, the collapsed rule
+/// on triangles, p points on sides. Name "tiles:P:L".
+class PerTile final : public RuleProvider {
+ public:
+  PerTile(int points_per_direction, int levels);
+  const Rule& rule(const basis::ElementKind& kind) const override;
+  const Rule1D& edge_rule() const override { return gauss_.edge_rule(); }
+  std::string name() const override;
+  int levels() const { return levels_; }
+
+ private:
+  Gauss gauss_;
+  int levels_;
+  Rule tiled_;
+};
+
+}  // namespace iga::quadrature

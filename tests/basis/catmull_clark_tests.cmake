@@ -1,0 +1,1 @@
+# Tests of the Catmull–Clark space (registered with iga_add_test).

@@ -1,0 +1,75 @@
+// Per-tile rules for irregular elements: tile layout, exactness per tile, the specification parser.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "quadrature/per_tile.hpp"
+
+using namespace iga::quadrature;
+
+TEST(PerTile, PointCountsWeightsAndNoPointAtTheVertex) {
+  for (int p = 1; p <= 4; ++p) {
+    for (int levels = 1; levels <= 12; ++levels) {
+      const Rule r = tiled_rule(p, levels);
+      EXPECT_EQ(r.size(), (3 * levels + 1) * p * p);
+      EXPECT_NEAR(r.weights.sum(), 1.0, 1e-14);  // a sum of up to 592 rounded weights
+      EXPECT_GT(r.points.colwise().maxCoeff().minCoeff(), 0.0);  // max(u, v) > 0 at every point
+      EXPECT_GE(r.points.minCoeff(), 0.0);
+      EXPECT_LE(r.points.maxCoeff(), 1.0);
+    }
+  }
+}
+
+// Each tile carries a p × p Gauss rule: monomials u^a v^b with a, b <= 2p-1 are integrated exactly,
+// ∫∫ u^a v^b = 1/((a+1)(b+1)).
+TEST(PerTile, ExactForTensorPolynomials) {
+  const int p = 3;
+  const Rule r = tiled_rule(p, 6);
+  for (int a = 0; a <= 2 * p - 1; ++a) {
+    for (int b = 0; b <= 2 * p - 1; ++b) {
+      double s = 0;
+      for (Eigen::Index k = 0; k < r.size(); ++k) s += r.weights(k) * std::pow(r.points(0, k), a) * std::pow(r.points(1, k), b);
+      EXPECT_NEAR(s, 1.0 / ((a + 1) * (b + 1)), 1e-15);
+    }
+  }
+}
+
+// A function that is a different polynomial on each level, f = (u+v)^2 · 4^(l-1) with l the tile level
+// (l = floor(-log2(max(u,v))) + 1), is not integrated exactly by one Gauss rule over the element but is by the
+// tiled rule on levels 1..L, up to the corner square (where f = (u+v)^2 4^L with the same rule is exact too).
+// Exact value: sum over levels of 4^(l-1) ∫_{level l} (u+v)^2, from ∫_{[0,s]^2} (u+v)^2 = 7 s^4 / 6.
+TEST(PerTile, ExactForLevelwisePolynomials) {
+  const int levels = 5;
+  const Rule r = tiled_rule(2, levels);
+  auto level_of = [&](double u, double v) {
+    const int l = static_cast<int>(std::floor(-std::log2(std::max(u, v)))) + 1;
+    return std::min(l, levels + 1);
+  };
+  double s = 0;
+  for (Eigen::Index k = 0; k < r.size(); ++k) {
+    const double u = r.points(0, k), v = r.points(1, k);
+    s += r.weights(k) * (u + v) * (u + v) * std::pow(4.0, level_of(u, v) - 1);
+  }
+  double exact = 0;
+  for (int l = 1; l <= levels; ++l) {
+    const double outer = std::ldexp(1.0, 1 - l), inner = std::ldexp(1.0, -l);
+    exact += std::pow(4.0, l - 1) * 7.0 / 6.0 * (std::pow(outer, 4) - std::pow(inner, 4));
+  }
+  exact += std::pow(4.0, levels) * 7.0 / 6.0 * std::pow(std::ldexp(1.0, -levels), 4);
+  EXPECT_NEAR(s, exact, 1e-14);
+}
+
+TEST(PerTile, ProviderDispatchesOnKind) {
+  const PerTile t(3, 4);
+  EXPECT_EQ(t.name(), "tiles:3:4");
+  iga::basis::ElementKind irregular{iga::basis::Shape::Quad, iga::basis::Family::Irregular, 5};
+  EXPECT_EQ(t.rule(irregular).size(), 13 * 9);
+  EXPECT_EQ(t.rule(iga::basis::ElementKind{}).size(), 9);
+  auto p = make_rule_provider("tiles:2:7", 4);
+  EXPECT_EQ(p->name(), "tiles:2:7");
+  EXPECT_THROW(make_rule_provider("tiles:2", 4), iga::InputError);
+  EXPECT_THROW(make_rule_provider("tiles:2:x", 4), iga::InputError);
+  EXPECT_THROW(make_rule_provider("tiles:2:0", 4), iga::InputError);
+  EXPECT_THROW(make_rule_provider("gauss:2:3", 4), iga::InputError);
+}
