@@ -1,0 +1,105 @@
+#pragma once
+// Catmull–Clark subdivision splines on a control net: one element per (quad) face of the net, one dof per
+// vertex of the net.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "basis/catmull_clark/irregular_patch.hpp"
+#include "basis/catmull_clark/stam.hpp"
+#include "basis/catmull_clark/topology.hpp"
+#include "basis/geometry.hpp"
+#include "basis/space.hpp"
+#include "mesh/poly_mesh.hpp"
+
+namespace iga::basis::catmull_clark {
+
+/// The Catmull–Clark subdivision splines of a control net (any polygons; open or closed; planar or in 3D).
+///
+/// Boundary rule: OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER. The limit boundary is the uniform cubic B-spline
+/// of the boundary polygon; boundary vertices with a single face are interpolated corners.
+/// Regular vertices: interior with 4 faces, boundary with 2 faces, corners (1 face). Extraordinary vertices
+/// (EVs): interior valence n != 4 (3..16), boundary vertices with 3..15 faces (n = faces + 1 <= 16).
+///
+/// If some face is not a quad, or a face touches more than one EV, a global Catmull–Clark step (OpenSubdiv
+/// TopologyRefiner, see refine_net) is applied first and the refined net is the control net
+/// (refinement_steps() == 1); vertex and face indices below then refer to that net. One step does not
+/// always suffice: a non-quad face with an EV corner has a child touching two EVs (the vertex and the face
+/// point); then a second step follows (refinement_steps() == 2). Two steps always suffice.
+///
+/// Elements = faces of the control net, in order. An element's corners c0..c3 are its face's vertices
+/// rotated so that c0 is its EV (if any): c_i = face[(i + r) % 4]; reference u runs c0 → c1, v runs c0 → c3.
+///   kind: {Quad, Regular, 4}, or {Quad, Irregular, n} at an EV (n = interior valence, or boundary faces + 1).
+/// Every element is stored as its dofs plus an operator G from the dofs to the local control points of its
+/// evaluator ("extraction"):
+///   regular faces: the 4×4 bicubic B-spline grid, phantom points by linear extrapolation across the
+///     boundary (reflection 2 P_b - P_in; tensor extrapolation at corners), see grid_operator;
+///   faces at an interior EV with interior corners c1..c3: Stam's method (StamEvaluator, its 2n+8 points
+///     gathered in its local order; see stam.hpp for its treatment of the EV point itself);
+///   all other faces at an EV (boundary EVs; interior EVs whose one-ring reaches the boundary): exact
+///     evaluation by repeated local subdivision with cached powers (irregular_patch.hpp); at the EV itself
+///     (and max(u, v) < 2^-65) values are the limit-point stencil, derivatives are 0.
+/// Boundary parts: each boundary loop (ordered as PolyMesh::boundary_loops() of the control net) is split
+/// at its corners (vertices with one face) into segments named "b<loop>.<segment>"; segments are numbered
+/// in loop order starting with the one that begins at the loop's first corner (first in the loop's half-edge
+/// order); a loop without corners is the single part "b<loop>.0". boundary_edges() lists the boundary edges
+/// part by part, each part in boundary order (domain on the left), as sides of the rotated elements.
+///
+/// Throws InputError (prefixed by `name`) for: an isolated vertex; an interior vertex with 2 faces; an
+/// interior valence above 16 or a boundary vertex with more than 15 faces; (when the global step is needed)
+/// a face with more than 16 sides. UnsupportedError for a face whose one-ring cannot be unfolded into a disc
+/// (tiny closed nets).
+/// How faces at an interior EV whose one-ring is complete (corners c1..c3 interior) are evaluated: Stam's
+/// eigenstructure (StamEvaluator, the default) or the repeated local subdivision with cached powers used for
+/// every other EV face (irregular_patch.hpp). Both are exact; the choice exists for cross-checks.
+enum class IrregularMethod { kStam, kSubdivision };
+
+class CatmullClarkSpace final : public Space {
+ public:
+  explicit CatmullClarkSpace(const mesh::PolyMesh& mesh, const std::string& name = "mesh",
+                             IrregularMethod method = IrregularMethod::kStam);
+
+  int refinement_steps() const { return steps_; }
+  /// The net whose vertices are the dofs.
+  const mesh::PolyMesh& control_mesh() const { return net_; }
+  /// Rotation r of element e: corner c_i is vertex face(e)[(i + r) % 4] of the control net.
+  int rotation(Index e) const { return elements_[static_cast<std::size_t>(e)].rotation; }
+
+  std::string name() const override { return "cc"; }
+  Index num_dofs() const override { return net_.num_vertices(); }
+  Index num_elements() const override { return net_.num_faces(); }
+  ElementKind kind(Index e) const override { return elements_[static_cast<std::size_t>(e)].kind; }
+  std::span<const Index> dofs(Index e) const override;
+  Index max_local_dofs() const override { return max_local_dofs_; }
+  void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
+  std::vector<BoundaryEdge> boundary_edges() const override { return boundary_edges_; }
+  std::vector<std::string> boundary_part_names() const override { return part_names_; }
+
+ private:
+  struct Element {
+    int rotation = 0;
+    ElementKind kind;
+    Index dof_offset = 0, num_dofs = 0;
+    Eigen::MatrixXd regular;  // 16 × dofs (regular faces)
+    std::unique_ptr<IrregularElement> irregular;
+    const StamEvaluator* stam = nullptr;
+    Eigen::MatrixXd stam_map;  // (2n+8) × dofs
+  };
+  void build_elements(const std::string& name, IrregularMethod method);
+  void build_boundary();
+
+  mesh::PolyMesh net_;
+  int steps_ = 0;
+  std::vector<Element> elements_;
+  std::vector<Index> dofs_;
+  Index max_local_dofs_ = 0;
+  std::vector<BoundaryEdge> boundary_edges_;
+  std::vector<std::string> part_names_;
+};
+
+/// The geometry of a control net: CatmullClarkSpace + the control net's vertex positions (dim 2 when all
+/// z == 0, else 3).
+Geometry make_catmull_clark_geometry(const mesh::PolyMesh& mesh, const std::string& name = "mesh");
+
+}  // namespace iga::basis::catmull_clark
