@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "basis/bspline/patches.hpp"
+#include "basis/catmull_clark/space.hpp"
 #include "core/error.hpp"
 #include "fem/expression.hpp"
 #include "fem/poisson.hpp"
@@ -24,7 +25,7 @@ namespace {
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json";
-  int degree = 3, refine = 4, threads = 0, samples = 4;
+  int degree = 3, refine = -1, threads = 0, samples = 4;
   double reaction = 0.0;
   bool quiet = false, mean_zero = false;
 };
@@ -56,13 +57,29 @@ int run(const Options& o) {
     if (!o.quiet) std::cerr << "iga-poisson: " << s << std::endl;
   };
   if (o.threads > 0) fem::set_num_threads(o.threads);
-  if (o.basis != "bspline") {
-    throw UnsupportedError("--basis " + o.basis + ": not available in this build (available: bspline)");
+  if (o.basis != "bspline" && o.basis != "cc") {
+    throw UnsupportedError("--basis " + o.basis + ": not available in this build (available: bspline, cc)");
   }
-  // Geometry: a quad-grid control net from an OBJ file, or the embedded quarter annulus.
-  const basis::Geometry coarse = o.mesh.empty() ? basis::bspline::make_quarter_annulus(o.degree)
-                                                : basis::bspline::geometry_from_quad_grid(mesh::read_obj(o.mesh), o.degree, o.mesh);
-  const refine::Refinement refined = refine::refine_uniform(coarse, o.refine);
+  // Geometry: for bspline a quad-grid control net from an OBJ file or the embedded quarter annulus; for cc
+  // any control net.
+  int global_steps = 0;
+  const int refine_steps = o.refine >= 0 ? o.refine : (o.basis == "cc" ? 1 : 4);
+  auto make_coarse = [&]() -> basis::Geometry {
+    if (o.basis == "cc") {
+      if (o.mesh.empty()) throw InputError("--basis cc needs --mesh (a control net, e.g. data/meshes/square_evs.obj)");
+      basis::Geometry g = basis::catmull_clark::make_catmull_clark_geometry(mesh::read_obj(o.mesh), o.mesh);
+      global_steps = dynamic_cast<const basis::catmull_clark::CatmullClarkSpace&>(g.space()).refinement_steps();
+      if (global_steps > 0) {
+        log("the net has non-quad faces or faces touching several extraordinary vertices: applied " +
+            std::to_string(global_steps) + " global Catmull–Clark step(s) first");
+      }
+      return g;
+    }
+    return o.mesh.empty() ? basis::bspline::make_quarter_annulus(o.degree)
+                          : basis::bspline::geometry_from_quad_grid(mesh::read_obj(o.mesh), o.degree, o.mesh);
+  };
+  const basis::Geometry coarse = make_coarse();
+  const refine::Refinement refined = refine::refine_uniform(coarse, refine_steps);
   const basis::Geometry& geometry = refined.geometry;
   const bool surface = geometry.dim() == 3;
   const auto names = geometry.space().boundary_part_names();
@@ -102,7 +119,7 @@ int run(const Options& o) {
     problem.neumann_where = std::make_shared<fem::Expression>(o.neumann_where, "--neumann-where");
   }
   problem.mean_zero = o.mean_zero;
-  const int qp = o.degree + 1;
+  const int qp = o.basis == "cc" ? 4 : o.degree + 1;
   const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? "gauss:" + std::to_string(qp) : o.quadrature, qp);
   const fem::SolverOptions solver{fem::parse_solver(o.solver)};
 
@@ -121,8 +138,9 @@ int run(const Options& o) {
   j["basis"] = o.basis;
   j["mesh"] = o.mesh.empty() ? "default:quarter-annulus" : o.mesh;
   j["dimension"] = geometry.dim();
-  j["degree"] = o.degree;
-  j["refine"] = o.refine;
+  j["degree"] = o.basis == "cc" ? 3 : o.degree;
+  j["refine"] = refine_steps;
+  if (o.basis == "cc") j["cc_global_steps"] = global_steps;
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
                   {"source", o.source}, {"dirichlet", o.dirichlet}, {"neumann", o.neumann},
                   {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where}, {"exact", o.exact},
@@ -178,20 +196,20 @@ int main(int argc, char** argv) {
   app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline); default: the embedded quarter annulus")
       ->check(CLI::ExistingFile);
   app.add_option("--basis", o.basis, "basis backend")->check(CLI::IsMember({"bspline", "cc", "halfbox", "polyhedral"}))->capture_default_str();
-  app.add_option("--degree", o.degree, "polynomial degree per direction")->check(CLI::Range(1, 12))->capture_default_str();
-  app.add_option("--refine", o.refine, "uniform refinement steps (each halves every element)")->check(CLI::Range(0, 14))->capture_default_str();
+  app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(CLI::Range(1, 12))->capture_default_str();
+  app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc)")->check(CLI::Range(0, 14));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
   app.add_option("--problem", o.problem, "built-in manufactured problem (" + names + "); default sine when no --source/--exact");
   app.add_option("--source", o.source, "f(x,y,z) in -Δu + c u = f (muparser expression)");
   app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact, else 0");
   app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)");
-  app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0 or 0..3)");
+  app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0; cc: b<loop>.<segment> between corners; or indices)");
   app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data, e.g. 'x > 0.999'");
   app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms");
   app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(CLI::NonNegativeNumber)->capture_default_str();
-  app.add_option("--quadrature", o.quadrature, "quadrature rule: gauss:P (P points per direction); default gauss:degree+1");
+  app.add_option("--quadrature", o.quadrature, "quadrature rule: gauss:P (P points per direction) or tiles:P:L (P×P Gauss on each tile of levels 1..L of elements at extraordinary vertices); default gauss:degree+1");
   app.add_option("--solver", o.solver, "cholmod or cg")->capture_default_str();
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(CLI::Range(1, 1024));
   app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();

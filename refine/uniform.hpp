@@ -11,9 +11,11 @@ struct Refinement {
   Eigen::SparseMatrix<double> prolongation;  ///< fine coefficients = prolongation × coarse coefficients
 };
 
-/// `steps` rounds of uniform refinement. For tensor-product B-spline spaces: the midpoint of every
-/// non-empty knot interval is inserted in both directions (Oslo knot insertion), so each element splits
-/// into four. UnsupportedError for other spaces (named). steps = 0 returns the geometry with the identity.
+/// `steps` rounds of uniform refinement; each element splits into four and the map is unchanged.
+/// Tensor-product B-splines: the midpoint of every non-empty knot interval is inserted in both directions
+/// (Oslo knot insertion). Catmull–Clark: the control net is subdivided (refine_net), the new space is that
+/// of the refined net. UnsupportedError for other spaces (named). steps = 0 returns the geometry with the
+/// identity.
 Refinement refine_uniform(const basis::Geometry& geometry, int steps);
 
 }  // namespace iga::refine
