@@ -11,6 +11,20 @@ struct BasisValues {
   Eigen::MatrixXd value;
   Eigen::MatrixXd du, dv;         ///< first derivatives, when derivatives >= 1
   Eigen::MatrixXd duu, duv, dvv;  ///< second derivatives, when derivatives >= 2
+
+  /// Sizes the blocks needed for `derivatives` to functions × points (no allocation when unchanged).
+  void resize(Eigen::Index functions, Eigen::Index points, int derivatives) {
+    value.resize(functions, points);
+    if (derivatives >= 1) {
+      du.resize(functions, points);
+      dv.resize(functions, points);
+    }
+    if (derivatives >= 2) {
+      duu.resize(functions, points);
+      duv.resize(functions, points);
+      dvv.resize(functions, points);
+    }
+  }
 };
 
 }  // namespace iga::basis

@@ -111,16 +111,7 @@ IrregularElement make_irregular_element(const OneRing& ring, const Eigen::Matrix
 void evaluate_irregular(const IrregularElement& el, const Eigen::Matrix2Xd& pts, int derivatives,
                         BasisValues& out) {
   const Eigen::Index q = pts.cols(), nd = el.level1.cols();
-  out.value.resize(nd, q);
-  if (derivatives >= 1) {
-    out.du.resize(nd, q);
-    out.dv.resize(nd, q);
-  }
-  if (derivatives >= 2) {
-    out.duu.resize(nd, q);
-    out.duv.resize(nd, q);
-    out.dvv.resize(nd, q);
-  }
+  out.resize(nd, q, derivatives);
   // Group the points by (level, tile); key -1 = limit point.
   thread_local std::vector<std::pair<int, Eigen::Index>> keyed;
   thread_local Eigen::Matrix2Xd tile;

@@ -217,16 +217,7 @@ void StamEvaluator::evaluate(const Eigen::Matrix2Xd& pts, int derivatives, Basis
     throw InputError("catmull_clark: derivatives must be 0, 1 or 2, not " + std::to_string(derivatives));
   }
   const Eigen::Index q = pts.cols(), np = num_points();
-  out.value.resize(np, q);
-  if (derivatives >= 1) {
-    out.du.resize(np, q);
-    out.dv.resize(np, q);
-  }
-  if (derivatives >= 2) {
-    out.duu.resize(np, q);
-    out.duv.resize(np, q);
-    out.dvv.resize(np, q);
-  }
+  out.resize(np, q, derivatives);
   for (Eigen::Index p = 0; p < q; ++p) {
     const double u = pts(0, p), v = pts(1, p);
     if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) {

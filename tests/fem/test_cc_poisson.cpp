@@ -13,8 +13,10 @@
 #include "quadrature/per_tile.hpp"
 #include "quadrature/rule_provider.hpp"
 #include "refine/uniform.hpp"
+#include "support/rates.hpp"
 
 using namespace iga;
+using iga::test::fitted_rate;
 
 namespace {
 mesh::PolyMesh net(const std::string& name) { return mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/" + name); }
@@ -75,15 +77,6 @@ double boundary_area(const mesh::PolyMesh& m) {
   return total;
 }
 
-double fitted_rate(const std::vector<double>& errors) {
-  const int n = static_cast<int>(errors.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (int k = 0; k < n; ++k) {
-    const double x = -k * std::log(2.0), y = std::log(errors[static_cast<std::size_t>(k)]);
-    sx += x; sy += y; sxx += x * x; sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 }  // namespace
 
 // The unit-square net with interior and boundary EVs: area 1 exactly in the limit (straight boundary, corners

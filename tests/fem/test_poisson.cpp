@@ -11,8 +11,10 @@
 #include "fem/problems.hpp"
 #include "quadrature/rule_provider.hpp"
 #include "refine/uniform.hpp"
+#include "support/rates.hpp"
 
 using namespace iga;
+using iga::test::fitted_rate;
 
 namespace {
 fem::PoissonProblem from(const fem::ManufacturedProblem& mp) {
@@ -23,16 +25,6 @@ fem::PoissonProblem from(const fem::ManufacturedProblem& mp) {
   return p;
 }
 
-// Least-squares slope of log(error) against log(h), h = 2^-level.
-double fitted_rate(const std::vector<double>& errors) {
-  const int n = static_cast<int>(errors.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (int k = 0; k < n; ++k) {
-    const double x = -k * std::log(2.0), y = std::log(errors[static_cast<std::size_t>(k)]);
-    sx += x; sy += y; sxx += x * x; sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 // A 4×4-element degree-p rectangle [0,1]² whose interior control points are moved: a non-affine map.
 basis::Geometry distorted_square(int p, unsigned seed) {
