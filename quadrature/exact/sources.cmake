@@ -1,0 +1,3 @@
+# Sources of quadrature/exact (paths relative to quadrature/).
+set(IGA_QUADRATURE_EXACT_SOURCES
+)

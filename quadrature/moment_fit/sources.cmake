@@ -1,0 +1,3 @@
+# Sources of quadrature/moment_fit (paths relative to quadrature/).
+set(IGA_QUADRATURE_MOMENT_FIT_SOURCES
+)

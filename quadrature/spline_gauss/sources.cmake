@@ -1,0 +1,3 @@
+# Sources of quadrature/spline_gauss (paths relative to quadrature/).
+set(IGA_QUADRATURE_SPLINE_GAUSS_SOURCES
+)
