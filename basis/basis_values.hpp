@@ -25,6 +25,20 @@ struct BasisValues {
       dvv.resize(functions, points);
     }
   }
+
+  /// Zeroes column p (one point) of the blocks needed for `derivatives`.
+  void zero_column(Eigen::Index p, int derivatives) {
+    value.col(p).setZero();
+    if (derivatives >= 1) {
+      du.col(p).setZero();
+      dv.col(p).setZero();
+    }
+    if (derivatives >= 2) {
+      duu.col(p).setZero();
+      duv.col(p).setZero();
+      dvv.col(p).setZero();
+    }
+  }
 };
 
 }  // namespace iga::basis

@@ -143,16 +143,8 @@ void evaluate_irregular(const IrregularElement& el, const Eigen::Matrix2Xd& pts,
     if (key < 0) {
       for (std::size_t i = a; i < b; ++i) {
         const Eigen::Index p = keyed[i].second;
+        out.zero_column(p, derivatives);
         out.value.col(p) = el.limit;
-        if (derivatives >= 1) {
-          out.du.col(p).setZero();
-          out.dv.col(p).setZero();
-        }
-        if (derivatives >= 2) {
-          out.duu.col(p).setZero();
-          out.duv.col(p).setZero();
-          out.dvv.col(p).setZero();
-        }
       }
       a = b;
       continue;

@@ -165,16 +165,7 @@ void StamEvaluator::evaluate_ev(double u, double v, int derivatives, BasisValues
   if (n_ == 4) {
     // Regular: the bicubic B-spline of the 4×4 net (i, j) in {-1..2}^2, exact at any (u, v).
     const UniformBasis bu(u), bv(v);
-    out.value.col(p).setZero();
-    if (derivatives >= 1) {
-      out.du.col(p).setZero();
-      out.dv.col(p).setZero();
-    }
-    if (derivatives >= 2) {
-      out.duu.col(p).setZero();
-      out.duv.col(p).setZero();
-      out.dvv.col(p).setZero();
-    }
+    out.zero_column(p, derivatives);
     // Derivatives of N3 from the differenced form: N3_a' = N2_{a-1} − N2_a, N3_a'' = N1_{a-2} − 2 N1_{a-1} + N1_a.
     const auto d1 = [](const UniformBasis& b, int a) {
       return (a >= 1 ? b.quadratic[a - 1] : 0.0) - (a <= 2 ? b.quadratic[a] : 0.0);
