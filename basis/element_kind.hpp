@@ -16,6 +16,7 @@ struct ElementKind {
   Shape shape = Shape::Quad;
   Family family = Family::Regular;
   int valence = 4;  ///< n of the extraordinary vertex or face when Irregular; 4 (quad) or 6 (triangle) otherwise
+  bool boundary = false;  ///< Irregular: the extraordinary vertex lies on the boundary (its ring is not closed)
 
   friend bool operator==(const ElementKind&, const ElementKind&) = default;
 };

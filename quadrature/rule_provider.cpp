@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "quadrature/gauss_legendre.hpp"
 #include "quadrature/per_tile.hpp"
+#include "quadrature/spline_gauss/macro_rule.hpp"
 #include "quadrature/tensor_rule.hpp"
 
 namespace iga::quadrature {
@@ -51,7 +52,13 @@ std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int de
     const std::string expected = "tiles:P:L with P points per direction and L levels";
     return std::make_unique<PerTile>(parse_count(parts[1], spec, expected), parse_count(parts[2], spec, expected));
   }
-  throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L)");
+  if (method == "macro" && (parts.size() == 2 || parts.size() == 3)) {
+    const std::string expected = "macro:R or macro:R:L with R rings per macro patch (1, 2, 3) and L levels";
+    const int r = parse_count(parts[1], spec, expected);
+    const int levels = parts.size() == 3 ? parse_count(parts[2], spec, expected) : 8;
+    return spline_gauss::make_macro_patch(r, levels);
+  }
+  throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L, macro:R[:L])");
 }
 
 }  // namespace iga::quadrature

@@ -36,7 +36,8 @@ class Gauss final : public RuleProvider {
   Rule quad_, triangle_;
 };
 
-/// Makes a provider from a specification: "gauss:P". `default_points` is used for a bare "gauss".
+/// Makes a provider from a specification: "gauss:P", "tiles:P:L" (PerTile), "macro:R[:L]" (strip and macro
+/// Gauss rules for spline spaces, spline_gauss::MacroPatch). `default_points` is used for a bare "gauss".
 /// Throws InputError naming the specification when it is not understood.
 std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int default_points);
 
