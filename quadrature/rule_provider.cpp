@@ -1,11 +1,13 @@
 #include "quadrature/rule_provider.hpp"
 
 #include <charconv>
+#include <cstdlib>
 #include <vector>
 
 #include "core/error.hpp"
 #include "quadrature/gauss_legendre.hpp"
 #include "quadrature/per_tile.hpp"
+#include "quadrature/moment_fit/table.hpp"
 #include "quadrature/spline_gauss/macro_rule.hpp"
 #include "quadrature/tensor_rule.hpp"
 
@@ -58,7 +60,14 @@ std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int de
     const int levels = parts.size() == 3 ? parse_count(parts[2], spec, expected) : 8;
     return spline_gauss::make_macro_patch(r, levels);
   }
-  throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L, macro:R[:L])");
+  if (method == "fitted" && parts.size() <= 2) {
+    // Tables made by tools/fit_quadrature.cpp: fitted:DIR, else $IGA_QUADRATURE_DIR, else the source tree's.
+    std::string dir = IGA_QUADRATURE_DATA_DIR;
+    if (const char* env = std::getenv("IGA_QUADRATURE_DIR")) dir = env;
+    if (parts.size() == 2) dir = spec.substr(spec.find(':') + 1);
+    return moment_fit::make_fitted(dir);
+  }
+  throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L, macro:R[:L], fitted[:DIR])");
 }
 
 }  // namespace iga::quadrature

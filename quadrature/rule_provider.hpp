@@ -37,7 +37,9 @@ class Gauss final : public RuleProvider {
 };
 
 /// Makes a provider from a specification: "gauss:P", "tiles:P:L" (PerTile), "macro:R[:L]" (strip and macro
-/// Gauss rules for spline spaces, spline_gauss::MacroPatch). `default_points` is used for a bare "gauss".
+/// Gauss rules for spline spaces, spline_gauss::MacroPatch), "fitted[:DIR]" (moment-fitted tables,
+/// moment_fit::Fitted; DIR defaults to $IGA_QUADRATURE_DIR, else the source tree's data/quadrature).
+/// `default_points` is used for a bare "gauss".
 /// Throws InputError naming the specification when it is not understood.
 std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int default_points);
 

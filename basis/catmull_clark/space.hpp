@@ -76,6 +76,14 @@ class CatmullClarkSpace final : public Space {
   std::vector<BoundaryEdge> boundary_edges() const override { return boundary_edges_; }
   std::vector<std::string> boundary_part_names() const override { return part_names_; }
 
+  /// For exact integration (quadrature/exact): Stam's evaluator of element e, or nullptr unless e is
+  /// evaluated by Stam's method; then stam_map(e) ((2n+8) × dofs(e).size()) maps the coefficients of dofs(e)
+  /// to the evaluator's local points (local points = stam_map · coefficients). irregular(e): the repeated
+  /// subdivision data of the other EV elements (irregular_patch.hpp), nullptr for regular and Stam elements.
+  const StamEvaluator* stam(Index e) const { return elements_[static_cast<std::size_t>(e)].stam; }
+  const Eigen::MatrixXd& stam_map(Index e) const { return elements_[static_cast<std::size_t>(e)].stam_map; }
+  const IrregularElement* irregular(Index e) const { return elements_[static_cast<std::size_t>(e)].irregular.get(); }
+
  private:
   struct Element {
     int rotation = 0;
