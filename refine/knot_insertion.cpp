@@ -1,0 +1,182 @@
+#include "refine/knot_insertion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace iga::refine {
+namespace {
+
+std::string num(double x) {
+  std::string s = std::to_string(x);
+  return s;
+}
+
+// The non-empty interval [t_mu, t_{mu+1}] inside the domain containing x (t_mu <= x < t_{mu+1}, or the last
+// one for x at the domain end).
+Index find_span(const SplineCurve& c, double x) {
+  const std::vector<Index> spans = domain_intervals(c);
+  const auto& t = c.knots;
+  for (Index mu : spans) {
+    if (x < t[static_cast<std::size_t>(mu) + 1]) return mu;
+  }
+  return spans.back();
+}
+
+// Blossom of the polynomial piece on [t_mu, t_{mu+1}] at args[0..p-1] (de Boor's triangle with a different
+// argument per level).
+}  // namespace
+
+Eigen::RowVectorXd blossom(const SplineCurve& c, Index mu, const double* args) {
+  const int p = c.degree;
+  const auto& t = c.knots;
+  Eigen::MatrixXd w = c.control_points.middleRows(mu - p, p + 1);
+  for (int r = 1; r <= p; ++r) {
+    const double x = args[r - 1];
+    for (Index i = mu; i >= mu - p + r; --i) {
+      const double a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>(i + p + 1 - r)];
+      const Index row = i - (mu - p);
+      w.row(row) = ((b - x) * w.row(row - 1) + (x - a) * w.row(row)) / (b - a);
+    }
+  }
+  return w.row(p);
+}
+
+namespace {
+
+void check_inside(const SplineCurve& c, double x) {
+  if (!std::isfinite(x) || x < c.domain_begin() || x > c.domain_end()) {
+    throw InputError("knot " + num(x) + " to insert is outside the domain [" + num(c.domain_begin()) + ", " +
+                     num(c.domain_end()) + "]");
+  }
+}
+
+}  // namespace
+
+void validate(const SplineCurve& c) {
+  if (c.degree < 1) throw InputError("degree must be >= 1, got " + std::to_string(c.degree));
+  const auto& t = c.knots;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!std::isfinite(t[i])) throw InputError("knot " + std::to_string(i) + " is not a finite number");
+    if (i > 0 && t[i] < t[i - 1]) {
+      throw InputError("knots decrease at index " + std::to_string(i) + " (" + num(t[i - 1]) + " > " + num(t[i]) +
+                       ")");
+    }
+  }
+  std::size_t run = 1;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    run = t[i] == t[i - 1] ? run + 1 : 1;
+    if (run > static_cast<std::size_t>(c.degree) + 1) {
+      throw InputError("knot " + num(t[i]) + " has multiplicity above degree + 1 = " + std::to_string(c.degree + 1));
+    }
+  }
+  const Index n = static_cast<Index>(t.size()) - c.degree - 1;
+  if (n < 1) throw InputError("too few knots for degree " + std::to_string(c.degree));
+  if (c.control_points.rows() != n) {
+    throw InputError("wrong number of control points: " + std::to_string(c.control_points.rows()) + " given, " +
+                     std::to_string(t.size()) + " knots and degree " + std::to_string(c.degree) + " need " +
+                     std::to_string(n));
+  }
+  if (c.control_points.cols() < 1) throw InputError("control points have no coordinates");
+  if (!c.control_points.allFinite()) throw InputError("a control point coordinate is not a finite number");
+  if (!(c.domain_begin() < c.domain_end())) throw InputError("the domain [t_degree, t_n] is empty");
+}
+
+std::vector<Index> domain_intervals(const SplineCurve& c) {
+  std::vector<Index> spans;
+  const Index n = c.num_control_points();
+  for (Index mu = c.degree; mu < n; ++mu) {
+    if (c.knots[static_cast<std::size_t>(mu)] < c.knots[static_cast<std::size_t>(mu) + 1]) spans.push_back(mu);
+  }
+  return spans;
+}
+
+std::vector<double> interval_midpoints(const SplineCurve& c, const std::vector<Index>& intervals) {
+  const std::vector<Index> spans = domain_intervals(c);
+  std::vector<Index> chosen = intervals;
+  if (chosen.empty()) {
+    for (Index i = 0; i < static_cast<Index>(spans.size()); ++i) chosen.push_back(i);
+  }
+  std::vector<double> mids;
+  for (std::size_t k = 0; k < chosen.size(); ++k) {
+    const Index i = chosen[k];
+    if (i < 0 || i >= static_cast<Index>(spans.size())) {
+      throw InputError("interval " + std::to_string(i) + " does not exist (the domain has " +
+                       std::to_string(spans.size()) + " non-empty intervals, 0-based)");
+    }
+    if (k > 0 && i <= chosen[k - 1]) throw InputError("intervals must be strictly increasing");
+    const auto mu = static_cast<std::size_t>(spans[static_cast<std::size_t>(i)]);
+    mids.push_back(0.5 * (c.knots[mu] + c.knots[mu + 1]));
+  }
+  return mids;
+}
+
+SplineCurve insert_knot_boehm(const SplineCurve& c, double x) {
+  check_inside(c, x);
+  const int p = c.degree;
+  const Index n = c.num_control_points();
+  const Index k = find_span(c, x);
+  const auto& t = c.knots;
+  SplineCurve out;
+  out.degree = p;
+  out.knots = t;
+  out.knots.insert(out.knots.begin() + k + 1, x);
+  out.control_points.resize(n + 1, c.control_points.cols());
+  for (Index i = 0; i <= k - p; ++i) out.control_points.row(i) = c.control_points.row(i);
+  for (Index i = k - p + 1; i <= k; ++i) {
+    const double ti = t[static_cast<std::size_t>(i)], tp = t[static_cast<std::size_t>(i + p)];
+    const double a = (x - ti) / (tp - ti);  // t_i <= t_k < t_{k+1} <= t_{i+p}
+    out.control_points.row(i) = (1.0 - a) * c.control_points.row(i - 1) + a * c.control_points.row(i);
+  }
+  for (Index i = k + 1; i <= n; ++i) out.control_points.row(i) = c.control_points.row(i - 1);
+  return out;
+}
+
+SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& xs) {
+  SplineCurve out = c;
+  for (double x : xs) out = insert_knot_boehm(out, x);
+  return out;
+}
+
+SplineCurve insert_knots_oslo(const SplineCurve& c, const std::vector<double>& xs) {
+  for (double x : xs) check_inside(c, x);
+  const int p = c.degree;
+  SplineCurve out;
+  out.degree = p;
+  out.knots = c.knots;
+  out.knots.insert(out.knots.end(), xs.begin(), xs.end());
+  std::sort(out.knots.begin(), out.knots.end());
+  const auto& tau = out.knots;
+  const Index nf = static_cast<Index>(tau.size()) - p - 1;
+  out.control_points.resize(nf, c.control_points.cols());
+  const std::vector<Index> spans = domain_intervals(c);
+  std::size_t s = 0;  // the coarse piece, advanced monotonically
+  for (Index j = 0; j < nf; ++j) {
+    // The non-empty fine interval inside the domain and the support of the fine B-spline j nearest to the
+    // middle of its arguments (least extrapolation in the blossom); its coarse piece.
+    const Index l_begin = std::max<Index>(j, p), l_end = std::min<Index>(j + p, nf - 1);
+    const Index centre = j + p / 2;
+    Index l = -1;
+    for (Index cand = l_begin; cand <= l_end; ++cand) {
+      if (tau[static_cast<std::size_t>(cand)] < tau[static_cast<std::size_t>(cand) + 1] &&
+          (l < 0 || std::abs(cand - centre) < std::abs(l - centre))) {
+        l = cand;
+      }
+    }
+    if (l < 0) l = l_begin;
+    const double mid = 0.5 * (tau[static_cast<std::size_t>(l)] + tau[static_cast<std::size_t>(l) + 1]);
+    while (s > 0 && mid < c.knots[static_cast<std::size_t>(spans[s])]) --s;
+    while (s + 1 < spans.size() && mid >= c.knots[static_cast<std::size_t>(spans[s]) + 1]) ++s;
+    out.control_points.row(j) = blossom(c, spans[s], &tau[static_cast<std::size_t>(j) + 1]);
+  }
+  return out;
+}
+
+Eigen::VectorXd evaluate(const SplineCurve& c, double x) {
+  std::vector<double> args(static_cast<std::size_t>(c.degree), x);
+  return blossom(c, find_span(c, x), args.data()).transpose();
+}
+
+}  // namespace iga::refine

@@ -1,0 +1,51 @@
+#pragma once
+// Knot insertion on B-spline curves with control points of any dimension (thesis §2.3.1): Boehm's
+// single-knot insertion and the Oslo algorithm (blossoms at the new knots). These are the references for
+// the refine-and-smooth algorithm (refine_smooth.hpp).
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace iga::refine {
+
+/// A B-spline curve in the standard convention: knots t_0 <= ... <= t_{m-1}, n = m - degree - 1 control
+/// points (rows of control_points, any number of columns), domain [t_degree, t_n]. The knots need not be
+/// clamped.
+struct SplineCurve {
+  int degree = 0;
+  std::vector<double> knots;
+  Eigen::MatrixXd control_points;
+
+  Index num_control_points() const { return static_cast<Index>(control_points.rows()); }
+  double domain_begin() const { return knots[static_cast<std::size_t>(degree)]; }
+  double domain_end() const { return knots[knots.size() - static_cast<std::size_t>(degree) - 1]; }
+};
+
+/// Throws InputError (one line naming the problem) unless: degree >= 1; finite, non-decreasing knots; no knot
+/// of multiplicity above degree + 1; control-point rows = knots - degree - 1 >= 1; finite coordinates; a
+/// non-empty domain.
+void validate(const SplineCurve& curve);
+
+/// The indices mu (t_mu < t_{mu+1}) of the non-empty knot intervals inside the domain, in order.
+std::vector<Index> domain_intervals(const SplineCurve& curve);
+
+/// Midpoints of the chosen non-empty domain intervals (0-based positions in domain_intervals(); empty = all).
+/// InputError for an index out of range or not strictly increasing.
+std::vector<double> interval_midpoints(const SplineCurve& curve, const std::vector<Index>& intervals);
+
+/// Boehm: inserts x (inside the domain) once. The interval used is the non-empty one containing x.
+SplineCurve insert_knot_boehm(const SplineCurve& curve, double x);
+/// Boehm applied knot by knot.
+SplineCurve insert_knots_boehm(const SplineCurve& curve, const std::vector<double>& xs);
+/// Oslo: all knots xs at once; every new control point is the blossom of the coarse piece at its knots.
+SplineCurve insert_knots_oslo(const SplineCurve& curve, const std::vector<double>& xs);
+
+/// The blossom (polar form) of the polynomial piece on the non-empty interval [t_mu, t_{mu+1}] at
+/// args[0..degree-1], by de Boor's triangle with one argument per level.
+Eigen::RowVectorXd blossom(const SplineCurve& curve, Index mu, const double* args);
+
+/// Curve point at x by the Cox–de Boor / de Boor recursion (for tests and the program).
+Eigen::VectorXd evaluate(const SplineCurve& curve, double x);
+
+}  // namespace iga::refine

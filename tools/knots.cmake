@@ -1,0 +1,1 @@
+iga_add_program(iga-knots iga_knots.cpp)
