@@ -5,6 +5,7 @@
 #include "basis/bspline/knot_insertion.hpp"
 #include "basis/bspline/tensor_space.hpp"
 #include "basis/catmull_clark/space.hpp"
+#include "refine/refine_smooth.hpp"
 #include "core/error.hpp"
 
 namespace iga::refine {
@@ -28,15 +29,16 @@ Refinement refine_uniform(const basis::Geometry& geometry, int steps) {
   if (!tensor) {
     throw UnsupportedError("uniform refinement of a '" + geometry.space().name() + "' space is not implemented");
   }
-  basis::bspline::KnotVector u = tensor->knots_u(), v = tensor->knots_v();
-  for (int s = 0; s < steps; ++s) {
-    u = basis::bspline::insert_midpoints(u);
-    v = basis::bspline::insert_midpoints(v);
+  // Tensor-product B-splines: each step is the symmetric refine-and-smooth algorithm (Cashman, Dodgson,
+  // Sabin) with the midpoint of every non-empty interval in both directions; prolongations compose.
+  Refinement out = refine_smooth_tensor(geometry);
+  for (int s = 1; s < steps; ++s) {
+    Refinement next = refine_smooth_tensor(out.geometry);
+    Eigen::SparseMatrix<double> composed = next.prolongation * out.prolongation;
+    out.geometry = next.geometry;
+    out.prolongation.swap(composed);
   }
-  auto fine = std::make_shared<const basis::bspline::TensorSpace>(u, v);
-  Eigen::SparseMatrix<double> r = basis::bspline::refinement_matrix(*tensor, *fine);
-  Eigen::MatrixXd cp = r * geometry.control_points();
-  return {basis::Geometry(fine, std::move(cp)), std::move(r)};
+  return out;
 }
 
 }  // namespace iga::refine
