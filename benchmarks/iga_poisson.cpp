@@ -18,13 +18,14 @@
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
 #include "quadrature/rule_provider.hpp"
+#include "refine/refine_smooth.hpp"
 #include "refine/uniform.hpp"
 
 namespace {
 
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
-  std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json";
+  std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
   int degree = 3, refine = -1, threads = 0, samples = 4;
   double reaction = 0.0;
   bool quiet = false, mean_zero = false;
@@ -79,7 +80,25 @@ int run(const Options& o) {
                           : basis::bspline::geometry_from_quad_grid(mesh::read_obj(o.mesh), o.degree, o.mesh);
   };
   const basis::Geometry coarse = make_coarse();
-  const refine::Refinement refined = refine::refine_uniform(coarse, refine_steps);
+  refine::Refinement refined = refine::refine_uniform(coarse, o.refine_intervals.empty() ? refine_steps : 0);
+  if (!o.refine_intervals.empty()) {
+    // Each step halves only the listed knot intervals, in both directions (refine-and-smooth).
+    if (o.basis != "bspline") throw InputError("--refine-intervals is for --basis bspline");
+    std::vector<Index> intervals;
+    std::stringstream ss(o.refine_intervals);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+      try {
+        std::size_t used = 0;
+        const long v = std::stol(item, &used);
+        if (used != item.size() || v < 0) throw std::invalid_argument(item);
+        intervals.push_back(v);
+      } catch (const std::exception&) {
+        throw InputError("--refine-intervals: '" + item + "' is not a 0-based interval index");
+      }
+    }
+    for (int s = 0; s < refine_steps; ++s) refined = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
+  }
   const basis::Geometry& geometry = refined.geometry;
   const bool surface = geometry.dim() == 3;
   const auto names = geometry.space().boundary_part_names();
@@ -140,6 +159,7 @@ int run(const Options& o) {
   j["dimension"] = geometry.dim();
   j["degree"] = o.basis == "cc" ? 3 : o.degree;
   j["refine"] = refine_steps;
+  if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
   if (o.basis == "cc") j["cc_global_steps"] = global_steps;
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
                   {"source", o.source}, {"dirichlet", o.dirichlet}, {"neumann", o.neumann},
@@ -197,6 +217,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--basis", o.basis, "basis backend")->check(CLI::IsMember({"bspline", "cc", "halfbox", "polyhedral"}))->capture_default_str();
   app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(CLI::Range(1, 12))->capture_default_str();
+  app.add_option("--refine-intervals", o.refine_intervals, "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
   app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc)")->check(CLI::Range(0, 14));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;

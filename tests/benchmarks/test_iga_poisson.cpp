@@ -141,6 +141,17 @@ TEST_F(IgaPoisson, CatmullClarkSquareWithThreeHoles) {
   EXPECT_LT(range[1], 2.2);
 }
 
+// Local refinement by refine-and-smooth: three steps halving interval 0 in both directions grade the mesh
+// toward one corner: 2, 3, 4 intervals per direction (16 elements); the patch test stays exact.
+TEST_F(IgaPoisson, RefineIntervals) {
+  const Outcome r = run("--quiet --refine 3 --refine-intervals 0 --problem linear --vtu none");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = report();
+  EXPECT_EQ(j["elements"], 16);
+  EXPECT_LT(j["l2_error"].get<double>(), 1e-10);
+  EXPECT_NE(run("--refine-intervals 0,x --vtu none --json none").code, 0);
+}
+
 TEST_F(IgaPoisson, NoExactGivesNullErrors) {
   const Outcome r = run("--quiet --source 1 --dirichlet 0 --refine 2 --vtu none");
   ASSERT_EQ(r.code, 0) << r.err;

@@ -10,6 +10,7 @@
 #include "fem/poisson.hpp"
 #include "fem/problems.hpp"
 #include "quadrature/rule_provider.hpp"
+#include "refine/refine_smooth.hpp"
 #include "refine/uniform.hpp"
 #include "support/rates.hpp"
 
@@ -184,4 +185,38 @@ TEST(Poisson, NeumannWhereEqualsNeumannPart) {
   EXPECT_EQ(a.neumann_edges, 8);
   EXPECT_EQ(b.neumann_edges, 8);
   EXPECT_LE((a.u - b.u).cwiseAbs().maxCoeff(), 1e-14);
+}
+
+// Nestedness (issue 5): a Poisson solution on a coarse B-spline space, prolongated by refine-and-smooth
+// (a subset of intervals halved in each direction), is the same function in the fine space: equal at random
+// parameter points to 1e-12.
+TEST(Poisson, ProlongatedSolutionIsReproducedByTheFineSpace) {
+  const basis::Geometry coarse = refine::refine_uniform(basis::bspline::make_quarter_annulus(3), 2).geometry;
+  const fem::PoissonResult r = fem::solve_poisson(coarse, quadrature::Gauss(4), from(fem::manufactured_problem("sine")));
+  const refine::Refinement fine = refine::refine_smooth_tensor(coarse, {0, 2}, {1, 3});
+  const Eigen::VectorXd uf = fine.prolongation * r.u;
+  auto value = [](const basis::Geometry& g, const Eigen::VectorXd& u, double x, double y) {
+    const auto& s = dynamic_cast<const basis::bspline::TensorSpace&>(g.space());
+    for (Index e = 0; e < s.num_elements(); ++e) {
+      const Eigen::Vector4d b = s.element_box(e);
+      if (x >= b(0) && x <= b(1) && y >= b(2) && y <= b(3)) {
+        Eigen::Matrix2Xd p(2, 1);
+        p << (x - b(0)) / (b(1) - b(0)), (y - b(2)) / (b(3) - b(2));
+        basis::BasisValues bv;
+        s.evaluate(e, p, 0, bv);
+        double sum = 0;
+        const auto dofs = s.dofs(e);
+        for (std::size_t a = 0; a < dofs.size(); ++a) sum += bv.value(static_cast<Index>(a), 0) * u(dofs[a]);
+        return sum;
+      }
+    }
+    return std::nan("");
+  };
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  EXPECT_GT(fine.geometry.space().num_dofs(), coarse.space().num_dofs());
+  for (int k = 0; k < 200; ++k) {
+    const double x = u01(rng), y = u01(rng);
+    EXPECT_NEAR(value(fine.geometry, uf, x, y), value(coarse, r.u, x, y), 1e-12);
+  }
 }
