@@ -134,9 +134,52 @@ SplineCurve insert_knot_boehm(const SplineCurve& c, double x) {
   return out;
 }
 
-SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& xs) {
-  SplineCurve out = c;
-  for (double x : xs) out = insert_knot_boehm(out, x);
+SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& xs_in) {
+  // All knots in one backward sweep (Boehm's rule applied knot by knot from the right end, in place, as in
+  // Piegl and Tiller's knot-vector refinement): O((n + r) p) instead of a copy of the curve per knot.
+  if (xs_in.empty()) return c;
+  for (double x : xs_in) check_inside(c, x);
+  std::vector<double> xs = xs_in;
+  std::sort(xs.begin(), xs.end());
+  const int p = c.degree;
+  const auto& t = c.knots;
+  const Index n = c.num_control_points();  // control points 0..n-1, knots 0..n+p
+  const Index r = static_cast<Index>(xs.size());
+  const Index a = find_span(c, xs.front());
+  const Index b = find_span(c, xs.back()) + 1;
+  SplineCurve out;
+  out.degree = p;
+  out.knots.assign(static_cast<std::size_t>(n + p + 1 + r), 0.0);
+  out.control_points.resize(n + r, c.control_points.cols());
+  auto& q = out.control_points;
+  auto& tb = out.knots;
+  for (Index i = 0; i <= a - p; ++i) q.row(i) = c.control_points.row(i);
+  for (Index i = b - 1; i < n; ++i) q.row(i + r) = c.control_points.row(i);
+  for (Index i = 0; i <= a; ++i) tb[static_cast<std::size_t>(i)] = t[static_cast<std::size_t>(i)];
+  for (Index i = b + p; i <= n + p; ++i) tb[static_cast<std::size_t>(i + r)] = t[static_cast<std::size_t>(i)];
+  Index i = b + p - 1, k = b + p + r - 1;
+  for (Index j = r - 1; j >= 0; --j) {
+    const double x = xs[static_cast<std::size_t>(j)];
+    while (x <= t[static_cast<std::size_t>(i)] && i > a) {
+      q.row(k - p - 1) = c.control_points.row(i - p - 1);
+      tb[static_cast<std::size_t>(k)] = t[static_cast<std::size_t>(i)];
+      --k;
+      --i;
+    }
+    q.row(k - p - 1) = q.row(k - p);
+    for (int l = 1; l <= p; ++l) {
+      const Index ind = k - p + l;
+      const double num = tb[static_cast<std::size_t>(k + l)] - x;
+      if (num == 0.0) {
+        q.row(ind - 1) = q.row(ind);
+      } else {
+        const double alpha = num / (tb[static_cast<std::size_t>(k + l)] - t[static_cast<std::size_t>(i - p + l)]);
+        q.row(ind - 1) = alpha * q.row(ind - 1) + (1.0 - alpha) * q.row(ind);
+      }
+    }
+    tb[static_cast<std::size_t>(k)] = x;
+    --k;
+  }
   return out;
 }
 

@@ -31,6 +31,26 @@ TEST(KnotInsertion, BoehmEqualsOsloAndKeepsTheCurve) {
   }
 }
 
+// The one-sweep multi-knot insertion equals single-knot Boehm insertions one after the other, including
+// repeated knots, knots at existing knots and a knot in every interval.
+TEST(KnotInsertion, SweepEqualsSingleInsertions) {
+  std::mt19937 rng(7);
+  for (int p = 1; p <= 7; ++p) {
+    const SplineCurve c = random_curve(rng, p, 3);
+    std::uniform_real_distribution<double> at(c.domain_begin(), c.domain_end());
+    std::vector<double> xs = {at(rng), at(rng), c.knots[static_cast<std::size_t>(p + 1)]};
+    xs.push_back(xs[0]);
+    for (Index mu : domain_intervals(c)) {
+      xs.push_back(0.5 * (c.knots[static_cast<std::size_t>(mu)] + c.knots[static_cast<std::size_t>(mu) + 1]));
+    }
+    SplineCurve one = c;
+    for (double x : xs) one = insert_knot_boehm(one, x);
+    const SplineCurve all = insert_knots_boehm(c, xs);
+    ASSERT_EQ(all.knots, one.knots) << p;
+    EXPECT_LE(rel_diff(all.control_points, one.control_points), 1e-13) << p;
+  }
+}
+
 TEST(KnotInsertion, ValidationNamesTheProblem) {
   SplineCurve c;
   c.degree = 2;
