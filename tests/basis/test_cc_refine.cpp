@@ -14,6 +14,7 @@
 
 #include "basis/catmull_clark/space.hpp"
 #include "core/error.hpp"
+#include "osd_reference.hpp"
 
 namespace {
 
@@ -67,22 +68,7 @@ PolyMesh fan_mesh(int sectors, int k, bool closed, unsigned seed) {
   return PolyMesh::build(p, faces);
 }
 
-std::unique_ptr<Osd::Far::TopologyRefiner> make_refiner(const PolyMesh& m) {
-  std::vector<int> sizes, idx;
-  for (Index f = 0; f < m.num_faces(); ++f) {
-    sizes.push_back(static_cast<int>(m.face_size(f)));
-    for (Index v : m.face(f)) idx.push_back(static_cast<int>(v));
-  }
-  Osd::Far::TopologyDescriptor desc;
-  desc.numVertices = static_cast<int>(m.num_vertices());
-  desc.numFaces = static_cast<int>(m.num_faces());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = idx.data();
-  Osd::Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Osd::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  using Factory = Osd::Far::TopologyRefinerFactory<Osd::Far::TopologyDescriptor>;
-  return std::unique_ptr<Osd::Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(Osd::Sdc::SCHEME_CATMARK, sdc)));
-}
+std::unique_ptr<Osd::Far::TopologyRefiner> make_refiner(const PolyMesh& m) { return iga::test::make_osd_refiner(m); }
 
 Eigen::Vector2d corner(int j) {
   static const double c[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
