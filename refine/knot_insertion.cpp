@@ -140,7 +140,7 @@ SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& 
   if (xs_in.empty()) return c;
   for (double x : xs_in) check_inside(c, x);
   std::vector<double> xs = xs_in;
-  std::sort(xs.begin(), xs.end());
+  if (!std::is_sorted(xs.begin(), xs.end())) std::sort(xs.begin(), xs.end());
   const int p = c.degree;
   const auto& t = c.knots;
   const Index n = c.num_control_points();  // control points 0..n-1, knots 0..n+p

@@ -1,6 +1,8 @@
 #include "refine/refine_smooth.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <exception>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -16,10 +18,13 @@ using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::R
 
 // (num / den) for an affine weight; 0/0 (all the knots involved coincide, so both points carry the same
 // arguments) is 0.
-double ratio(double num, double den) {
-  if (den > 0.0) return num / den;
-  if (num == 0.0) return 0.0;
+[[noreturn, gnu::noinline, gnu::cold]] void zero_span() {
   throw NumericalError("refine-and-smooth: a zero knot span in an affine combination");
+}
+[[gnu::always_inline]] inline double ratio(double num, double den) {
+  if (den > 0.0) [[likely]] return num / den;
+  if (num == 0.0) return 0.0;
+  zero_span();
 }
 
 // The index sets and the polar labels of the points P^λ_i. Positions p are Z indices for odd d and the Z
@@ -29,8 +34,8 @@ struct Layout {
   Index nz = 0, k = 0;
   std::vector<double> u;
   std::vector<char> in_y;
-  std::vector<Index> y;         // Z index of the original knot t_r
-  std::vector<Index> count_le;  // number of Y indices <= j
+  std::vector<std::int32_t> y;         // Z index of the original knot t_r
+  std::vector<std::int32_t> count_le;  // number of Y indices <= j
   Index first = 0, last = -1;   // the positions computed (§7)
 
   Index count_lt(Index j) const { return j <= 0 ? 0 : count_le[static_cast<std::size_t>(j - 1)]; }
@@ -66,14 +71,17 @@ struct Layout {
   double at(Index j) const { return u[static_cast<std::size_t>(j)]; }
 };
 
-Layout make_layout(const PolarSpline& s, const std::vector<double>& new_knots) {
+Layout make_layout(int degree, const double* t, Index k, const std::vector<double>& new_knots) {
+  if (k > (Index{1} << 29)) throw UnsupportedError("refine_smooth: more than 2^29 knots");
   Layout L;
-  L.d = s.degree;
-  L.k = static_cast<Index>(s.knots.size());
-  const auto& t = s.knots;
+  L.d = degree;
+  L.k = k;
+  L.u.reserve(static_cast<std::size_t>(2 * k));
+  L.in_y.reserve(static_cast<std::size_t>(2 * k));
+  L.y.reserve(static_cast<std::size_t>(k));
   for (Index j = 0; j < L.k; ++j) {
-    L.y.push_back(static_cast<Index>(L.u.size()));
-    L.u.push_back(t[static_cast<std::size_t>(j)]);
+    L.y.push_back(static_cast<std::int32_t>(L.u.size()));
+    L.u.push_back(t[j]);
     L.in_y.push_back(1);
     if (j + 1 < L.k && !std::isnan(new_knots[static_cast<std::size_t>(j)])) {
       L.u.push_back(new_knots[static_cast<std::size_t>(j)]);
@@ -83,7 +91,7 @@ Layout make_layout(const PolarSpline& s, const std::vector<double>& new_knots) {
   L.nz = static_cast<Index>(L.u.size());
   L.count_le.resize(L.u.size());
   Index c = 0;
-  for (std::size_t j = 0; j < L.u.size(); ++j) L.count_le[j] = c += L.in_y[j];
+  for (std::size_t j = 0; j < L.u.size(); ++j) L.count_le[j] = static_cast<std::int32_t>(c += L.in_y[j]);
   const Index h = L.d / 2;
   if (L.d % 2) {
     L.first = L.y[static_cast<std::size_t>(h)];
@@ -102,7 +110,7 @@ struct Action {
   double dm = 0, de = 0, pm = 0;  // factorised: D weight on P_{p-1}, E weight on P_{p+1}, P weight on D
 };
 
-Action plan(const Layout& L, Index p, int lambda, bool vprev, bool vself, bool vnext) {
+[[gnu::always_inline]] inline Action plan(const Layout& L, Index p, int lambda, bool vprev, bool vself, bool vnext) {
   Action a;
   if (!vself) return a;
   Index beta, gamma;
@@ -176,36 +184,224 @@ int apply(const Action& a, Out&& out, const A& prev, const B& self, const C& nex
 }
 
 // The refine stage: P^0 (even d) or P^1 (odd d) on positions L.first..L.last.
-RowMatrix refine_stage(const Layout& L, const PolarSpline& s, long long& count) {
-  const Index n = L.last - L.first + 1, h = L.d / 2;
-  RowMatrix P(n, s.control_points.cols());
-  const auto& t = s.knots;
-  for (Index p = L.first; p <= L.last; ++p) {
-    const Index r = L.count_le[static_cast<std::size_t>(p)] - 1;  // the original knot at or below p
-    if (L.d % 2 == 0) {
-      P.row(p - L.first) = s.control_points.row(r - h + 1);
-    } else if (L.in_y[static_cast<std::size_t>(p)]) {
-      P.row(p - L.first) = s.control_points.row(r - h);
-    } else {  // (3): Q_{p-1}, Q_{p+1} share d - 1 arguments
-      const Index qa = r - h, qb = r + 1 - h;
-      const double ta = t[static_cast<std::size_t>(qa)], td = t[static_cast<std::size_t>(qb + L.d - 1)];
-      const double w = ratio(L.at(p) - ta, td - ta);
-      P.row(p - L.first) = (1.0 - w) * s.control_points.row(qa) + w * s.control_points.row(qb);
-      ++count;
+// The input of one run in the paper's convention, without copies: k knots t[0..k-1], k - d + 1 control
+// points (rows of cp, any number of columns).
+struct Input {
+  int d = 0;
+  const double* t = nullptr;
+  Index k = 0;
+  const Eigen::MatrixXd* cp = nullptr;
+};
+
+// Refine-stage point at position p (P^0 for even d, P^1 for odd d): a copy of an input row, or (3) for a new
+// knot of odd degree (Q_{p-1}, Q_{p+1} share d - 1 arguments). Writes dim values with stride `stride`.
+[[gnu::always_inline]] inline int refine_point(const Layout& L, const Input& in, Index p, double* out, Index stride) {
+  const Index h = L.d / 2, rows = in.cp->rows(), dim = in.cp->cols();
+  const double* src = in.cp->data();
+  const Index r = L.count_le[static_cast<std::size_t>(p)] - 1;  // the original knot at or below p
+  if (L.d % 2 == 0 || L.in_y[static_cast<std::size_t>(p)]) {
+    const Index row = L.d % 2 == 0 ? r - h + 1 : r - h;
+    for (Index c = 0; c < dim; ++c) out[c * stride] = src[row + c * rows];
+    return 0;
+  }
+  const Index qa = r - h, qb = r + 1 - h;
+  const double ta = in.t[qa], td = in.t[qb + L.d - 1];
+  const double w = ratio(L.at(p) - ta, td - ta);
+  for (Index c = 0; c < dim; ++c) out[c * stride] = (1.0 - w) * src[qa + c * rows] + w * src[qb + c * rows];
+  return 1;
+}
+
+// The refine stage: P^0 (even d) or P^1 (odd d) on positions L.first..L.last (§3 variant).
+RowMatrix refine_stage(const Layout& L, const Input& in, long long& count) {
+  const Index n = L.last - L.first + 1;
+  RowMatrix P(n, in.cp->cols());
+  for (Index p = L.first; p <= L.last; ++p) count += refine_point(L, in, p, P.row(p - L.first).data(), 1);
+  return P;
+}
+
+// §3: every level from a separate copy of the previous one.
+RowMatrix run_levels(const Layout& L, const Input& in, std::vector<char>& valid, long long& count) {
+  RowMatrix P = refine_stage(L, in, count);
+  const Index n = P.rows(), dim = P.cols();
+  valid.assign(static_cast<std::size_t>(n), 1);
+  auto ok = [&](const std::vector<char>& v, Index q) { return q >= 0 && q < n && v[static_cast<std::size_t>(q)]; };
+  RowMatrix next(n, dim);
+  std::vector<char> next_valid(valid.size());
+  for (int lambda = 2 + L.d % 2; lambda <= L.d; lambda += 2) {
+    for (Index q = 0; q < n; ++q) {
+      const Index p = L.first + q;
+      const Action a = plan(L, p, lambda, ok(valid, q - 1), ok(valid, q), ok(valid, q + 1));
+      next_valid[static_cast<std::size_t>(q)] = a.kind != Action::marker;
+      if (a.kind == Action::marker) continue;
+      count += apply(a, next.row(q), P.row(q > 0 ? q - 1 : q), P.row(q), P.row(q + 1 < n ? q + 1 : q));
     }
+    P.swap(next);
+    valid.swap(next_valid);
   }
   return P;
 }
 
-}  // namespace
+// Applies an action to raw points of DIM (compile-time when > 0, else `dim`) coordinates.
+template <int DIM>
+inline int apply_raw(const Action& a, double* out, const double* prev, const double* self, const double* next,
+                     Index dim) {
+  const Index m = DIM > 0 ? DIM : dim;
+  switch (a.kind) {
+    case Action::copy:
+      for (Index c = 0; c < m; ++c) out[c] = self[c];
+      return 0;
+    case Action::left_pair:
+      for (Index c = 0; c < m; ++c) out[c] = a.w0 * prev[c] + a.w1 * self[c];
+      return 1;
+    case Action::right_pair:
+      for (Index c = 0; c < m; ++c) out[c] = a.w0 * self[c] + a.w1 * next[c];
+      return 1;
+    case Action::factorised:
+      for (Index c = 0; c < m; ++c) {
+        out[c] = a.pm * (a.dm * prev[c] + (1.0 - a.dm) * self[c]) + (1.0 - a.pm) * ((1.0 - a.de) * self[c] + a.de * next[c]);
+      }
+      return 3;
+    case Action::three:
+      for (Index c = 0; c < m; ++c) out[c] = a.w0 * prev[c] + a.w1 * self[c] + a.w2 * next[c];
+      return 2;
+    case Action::marker:
+      return 0;
+  }
+  return 0;
+}
 
-RefineSmoothResult refine_smooth(const PolarSpline& s, const std::vector<double>& new_knots,
-                                 RefineSmoothVariant variant) {
-  const int d = s.degree;
-  const auto k = static_cast<Index>(s.knots.size());
-  if (d < 1 || k < d || s.control_points.rows() != k - d + 1) {
+// §5: P^λ_i stored in the same place for every λ, all levels in ONE sweep: at step m the refine stage makes
+// position m and level ℓ (λ = λ_0 + 2ℓ) position m − ℓ − 1, which needs level ℓ − 1 at m − ℓ (made earlier in
+// this step), at m − ℓ − 1 (in place) and at m − ℓ − 2 (overwritten already: one saved point per level).
+// Position m − (number of levels) is then final and goes straight to the output if it survived the end
+// conditions. Working memory: a ring of (levels + 1) points and two points per level, independent of n.
+//
+// Every final point depends on the refine-stage points of at most `levels` positions on either side, so the
+// sweep runs on a range [begin, end) of positions by starting levels + 1 positions early and stopping
+// `levels` positions late (those positions only feed the range; the points they would miss near the
+// artificial ends are never final inside it). Combinations are counted for positions inside the range only,
+// so ranges add up to the count of one sweep.
+struct Sweep {
+  const Layout* L = nullptr;
+  const Input* in = nullptr;
+  Index n = 0;          // positions
+  int levels = 0;
+  Index expected = 0;   // surviving points = output rows
+  double* dst = nullptr;  // output, column-major expected × dim
+};
+
+// Sweeps [begin, end). `first` is the position of the first surviving point: found here when negative (the
+// range must then start at 0), else given. Returns the affine combinations; adds the surviving points to got.
+template <int DIM>
+long long sweep(const Sweep& S, Index begin, Index end, Index& first, Index& got) {
+  const Layout& L = *S.L;
+  const Index n = S.n, dim = S.in->cp->cols(), expected = S.expected;
+  const Index m_dim = DIM > 0 ? DIM : dim;
+  const int levels = S.levels;
+  const Index start = std::max<Index>(0, begin - levels - 1), stop = std::min<Index>(n, end + levels);
+  Index ring_size = 1;
+  while (ring_size < levels + 2) ring_size *= 2;
+  const Index mask = ring_size - 1;
+  std::vector<double> ring(static_cast<std::size_t>(ring_size * dim), 0.0);
+  std::vector<char> ring_valid(static_cast<std::size_t>(ring_size), 0);
+  std::vector<double> scratch(static_cast<std::size_t>(2 * (levels + 1) * dim), 0.0);
+  std::vector<double*> saved(static_cast<std::size_t>(levels + 1));
+  for (int l = 0; l <= levels; ++l) saved[static_cast<std::size_t>(l)] = scratch.data() + 2 * l * dim;
+  double* tmp = scratch.data() + dim;  // the second half of a pair that is not a saved point
+  std::vector<char> saved_valid(static_cast<std::size_t>(levels + 1), 0);
+  long long combinations = 0;
+  for (Index m = start; m < stop + levels; ++m) {
+    if (m < stop) {
+      const int c = refine_point(L, *S.in, L.first + m, ring.data() + (m & mask) * dim, 1);
+      if (m >= begin && m < end) combinations += c;
+      ring_valid[static_cast<std::size_t>(m & mask)] = 1;
+    }
+    for (int l = 0; l < levels; ++l) {
+      const Index q = m - l - 1;
+      if (q < start) break;
+      if (q >= stop) continue;
+      const int lambda = 2 + L.d % 2 + 2 * l;
+      double* self = ring.data() + (q & mask) * dim;
+      const bool has_next = q + 1 < stop;
+      const bool vnext = has_next && ring_valid[static_cast<std::size_t>((q + 1) & mask)];
+      const char vself = ring_valid[static_cast<std::size_t>(q & mask)];
+      const Action a = plan(L, L.first + q, lambda, saved_valid[static_cast<std::size_t>(l)], vself, vnext);
+      double*& prev = saved[static_cast<std::size_t>(l)];
+      for (Index c = 0; c < m_dim; ++c) tmp[c] = self[c];
+      if (a.kind != Action::marker) {
+        const int c = apply_raw<DIM>(a, self, prev, tmp, has_next ? ring.data() + ((q + 1) & mask) * dim : tmp, dim);
+        if (q >= begin && q < end) combinations += c;
+      }
+      std::swap(prev, tmp);  // the old value of position q is the next position's P^{λ-2}_{q-1}
+      saved_valid[static_cast<std::size_t>(l)] = vself;
+      ring_valid[static_cast<std::size_t>(q & mask)] = a.kind != Action::marker;
+    }
+    const Index f = m - levels;  // final now
+    if (f < begin || f >= end) continue;
+    const bool valid = ring_valid[static_cast<std::size_t>(f & mask)];
+    if (valid && first < 0) first = f;
+    const Index row = first < 0 ? -1 : f - first;
+    const bool inside = row >= 0 && row < expected;
+    if (valid != inside) {
+      throw NumericalError("refine_smooth: the control points surviving the end conditions are not " +
+                           std::to_string(expected) + " consecutive ones");
+    }
+    if (!valid) continue;
+    const double* src = ring.data() + (f & mask) * dim;
+    for (Index c = 0; c < m_dim; ++c) S.dst[row + c * expected] = src[c];
+    ++got;
+  }
+  return combinations;
+}
+
+// The whole sweep: the first positions serially (they contain the first surviving point), the rest in
+// chunks on the OpenMP threads when there are many positions.
+template <int DIM>
+void run_streaming(const Layout& L, const Input& in, Index expected, Eigen::MatrixXd& out, long long& count) {
+  Sweep S;
+  S.L = &L;
+  S.in = &in;
+  S.n = L.last - L.first + 1;
+  S.levels = L.d >= 2 + L.d % 2 ? (L.d - (2 + L.d % 2)) / 2 + 1 : 0;
+  S.expected = expected;
+  out.resize(expected, in.cp->cols());
+  S.dst = out.data();
+  constexpr Index chunk = Index{1} << 16;
+  const Index head = std::min(S.n, S.n > 4 * chunk ? chunk : S.n);
+  Index first = -1, got = 0;
+  long long combinations = sweep<DIM>(S, 0, head, first, got);
+  if (head < S.n) {
+    if (first < 0) throw NumericalError("refine_smooth: no control point survived the end conditions");
+    const Index chunks = (S.n - head + chunk - 1) / chunk;
+    std::exception_ptr error;
+#pragma omp parallel for schedule(static) reduction(+ : combinations, got)
+    for (Index c = 0; c < chunks; ++c) {
+      try {
+        Index f = first;
+        combinations += sweep<DIM>(S, head + c * chunk, std::min(S.n, head + (c + 1) * chunk), f, got);
+      } catch (...) {
+#pragma omp critical(iga_refine_smooth_error)
+        if (!error) error = std::current_exception();
+      }
+    }
+    if (error) std::rethrow_exception(error);
+  }
+  if (got != expected) {
+    throw NumericalError("refine_smooth: " + std::to_string(got) + " control points survived the end conditions, " +
+                         std::to_string(expected) + " expected");
+  }
+  count += combinations;
+}
+
+// Runs the algorithm; the surviving control points go to `out` (resized), the refined knots (paper convention)
+// to out_knots[offset..] (out_knots resized to offset + count + offset).
+void run(const Input& in, const std::vector<double>& new_knots, RefineSmoothVariant variant, long long& count,
+         Eigen::MatrixXd& out, std::vector<double>& out_knots, std::size_t offset) {
+  const int d = in.d;
+  const Index k = in.k;
+  if (d < 1 || k < d || in.cp->rows() != k - d + 1) {
     throw InputError("refine_smooth: " + std::to_string(k) + " knots of degree " + std::to_string(d) + " need " +
-                     std::to_string(k - d + 1) + " control points, got " + std::to_string(s.control_points.rows()));
+                     std::to_string(k - d + 1) + " control points, got " + std::to_string(in.cp->rows()));
   }
   if (static_cast<Index>(new_knots.size()) != k - 1) {
     throw InputError("refine_smooth: one entry per knot interval expected (" + std::to_string(k - 1) + "), got " +
@@ -214,71 +410,57 @@ RefineSmoothResult refine_smooth(const PolarSpline& s, const std::vector<double>
   for (Index j = 0; j + 1 < k; ++j) {
     const double x = new_knots[static_cast<std::size_t>(j)];
     if (std::isnan(x)) continue;
-    const double a = s.knots[static_cast<std::size_t>(j)], b = s.knots[static_cast<std::size_t>(j + 1)];
+    const double a = in.t[j], b = in.t[j + 1];
     if (!(a <= x && x <= b)) {
       throw InputError("refine_smooth: new knot " + std::to_string(x) + " is not in its interval [" +
                        std::to_string(a) + ", " + std::to_string(b) + "]");
     }
-    // Multiplicity it creates.
-    Index m = 1;  // knots are sorted: only runs at the interval ends can equal x
-    for (Index i = j; i >= 0 && s.knots[static_cast<std::size_t>(i)] == x; --i) ++m;
-    for (Index i = j + 1; i < k && s.knots[static_cast<std::size_t>(i)] == x; ++i) ++m;
+    if (a < x && x < b) continue;  // a new knot strictly inside its interval is simple
+    // Multiplicity it creates: knots are sorted, only runs at the interval ends can equal x.
+    Index m = 1;
+    for (Index i = j; i >= 0 && in.t[i] == x; --i) ++m;
+    for (Index i = j + 1; i < k && in.t[i] == x; ++i) ++m;
     if (m > d) throw InputError("refine_smooth: new knot " + std::to_string(x) + " would have multiplicity above the degree");
   }
-  const Layout L = make_layout(s, new_knots);
-  RefineSmoothResult result;
-  long long& count = result.affine_combinations;
-  RowMatrix P = refine_stage(L, s, count);
-  const Index n = P.rows(), dim = P.cols();
-  std::vector<char> valid(static_cast<std::size_t>(n), 1);
-  auto ok = [&](const std::vector<char>& v, Index q) { return q >= 0 && q < n && v[static_cast<std::size_t>(q)]; };
-  const Eigen::RowVectorXd zero = Eigen::RowVectorXd::Zero(dim);
-  if (variant == RefineSmoothVariant::levels) {
-    RowMatrix next(n, dim);
-    std::vector<char> next_valid(valid.size());
-    for (int lambda = 2 + d % 2; lambda <= d; lambda += 2) {
-      for (Index q = 0; q < n; ++q) {
-        const Index p = L.first + q;
-        const Action a = plan(L, p, lambda, ok(valid, q - 1), ok(valid, q), ok(valid, q + 1));
-        next_valid[static_cast<std::size_t>(q)] = a.kind != Action::marker;
-        if (a.kind == Action::marker) continue;
-        count += apply(a, next.row(q), P.row(q > 0 ? q - 1 : q), P.row(q), P.row(q + 1 < n ? q + 1 : q));
-      }
-      P.swap(next);
-      valid.swap(next_valid);
-    }
-  } else {
-    Eigen::RowVectorXd saved(dim), current(dim);  // P^{λ-2}_{q-1}, overwritten in place
-    for (int lambda = 2 + d % 2; lambda <= d; lambda += 2) {
-      char saved_valid = 0;
-      for (Index q = 0; q < n; ++q) {
-        const Index p = L.first + q;
-        const char self_valid = valid[static_cast<std::size_t>(q)];
-        const Action a = plan(L, p, lambda, saved_valid, self_valid, ok(valid, q + 1));
-        current = P.row(q);
-        if (a.kind != Action::marker) {
-          count += apply(a, P.row(q), saved, current, P.row(q + 1 < n ? q + 1 : q));
-        }
-        valid[static_cast<std::size_t>(q)] = a.kind != Action::marker;
-        saved.swap(current);
-        saved_valid = self_valid;
-      }
-    }
-  }
+  const Layout L = make_layout(d, in.t, k, new_knots);
   // §7: the points left are the control points whose arguments reach into [u_a, u_b].
   const Index a = L.y[static_cast<std::size_t>(d - 1)], b = L.y[static_cast<std::size_t>(k - d)];
   const Index expected = b - a + d;
-  Index first = 0;
-  while (first < n && !valid[static_cast<std::size_t>(first)]) ++first;
-  Index got = 0;
-  while (first + got < n && valid[static_cast<std::size_t>(first + got)]) ++got;
-  if (got != expected) {
-    throw NumericalError("refine_smooth: " + std::to_string(got) + " control points survived the end conditions, " +
-                         std::to_string(expected) + " expected");
+  if (variant == RefineSmoothVariant::levels) {
+    std::vector<char> valid;
+    const RowMatrix P = run_levels(L, in, valid, count);
+    const Index n = P.rows();
+    Index first = 0;
+    while (first < n && !valid[static_cast<std::size_t>(first)]) ++first;
+    Index got = 0;
+    while (first + got < n && valid[static_cast<std::size_t>(first + got)]) ++got;
+    if (got != expected) {
+      throw NumericalError("refine_smooth: " + std::to_string(got) + " control points survived the end conditions, " +
+                           std::to_string(expected) + " expected");
+    }
+    out = P.middleRows(first, got);
+  } else {
+    switch (in.cp->cols()) {
+      case 1: run_streaming<1>(L, in, expected, out, count); break;
+      case 2: run_streaming<2>(L, in, expected, out, count); break;
+      case 3: run_streaming<3>(L, in, expected, out, count); break;
+      case 4: run_streaming<4>(L, in, expected, out, count); break;
+      default: run_streaming<0>(L, in, expected, out, count); break;
+    }
   }
-  result.spline.degree = d;
-  result.spline.knots.assign(L.u.begin() + (a - d + 1), L.u.begin() + (b + d));
-  result.spline.control_points = P.middleRows(first, got);
+  const auto nk = static_cast<std::size_t>(b + d - (a - d + 1));
+  out_knots.resize(offset + nk + offset);
+  std::copy(L.u.begin() + (a - d + 1), L.u.begin() + (b + d), out_knots.begin() + static_cast<std::ptrdiff_t>(offset));
+}
+
+}  // namespace
+
+RefineSmoothResult refine_smooth(const PolarSpline& s, const std::vector<double>& new_knots,
+                                 RefineSmoothVariant variant) {
+  RefineSmoothResult result;
+  const Input in{s.degree, s.knots.data(), static_cast<Index>(s.knots.size()), &s.control_points};
+  result.spline.degree = s.degree;
+  run(in, new_knots, variant, result.affine_combinations, result.spline.control_points, result.spline.knots, 0);
   return result;
 }
 
@@ -286,34 +468,54 @@ SplineCurve refine_smooth(const SplineCurve& curve, const std::vector<double>& x
                           long long* count) {
   validate(curve);
   std::vector<double> rest = xs;
-  std::sort(rest.begin(), rest.end());
+  if (!std::is_sorted(rest.begin(), rest.end())) std::sort(rest.begin(), rest.end());
   for (double x : rest) {
     if (!std::isfinite(x) || x < curve.domain_begin() || x > curve.domain_end()) {
       throw InputError("knot " + std::to_string(x) + " to insert is outside the domain [" +
                        std::to_string(curve.domain_begin()) + ", " + std::to_string(curve.domain_end()) + "]");
     }
   }
-  SplineCurve cur = curve;
+  SplineCurve cur;
+  const SplineCurve* from = &curve;  // the curve of the current pass (no copy for the first)
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> per_interval, later;
+  if (rest.empty()) return curve;
   while (!rest.empty()) {
+    const SplineCurve& cur_in = *from;
     // One pass: the first pending knot of every non-empty interval [t_mu, t_{mu+1}) (the last one closed).
-    const std::vector<Index> spans = domain_intervals(cur);
-    PolarSpline polar = to_polar(cur);
-    std::vector<double> per_interval(polar.knots.size() - 1, nan), later;
-    std::size_t s = 0;
+    // The paper's knots are the standard ones without the first and the last: interval mu is paper mu - 1.
+    const auto m = cur_in.knots.size();
+    const Index n = cur_in.num_control_points();
+    per_interval.assign(m - 3, nan);
+    later.clear();
+    const auto& t = cur_in.knots;
+    auto empty = [&](Index i) { return t[static_cast<std::size_t>(i)] == t[static_cast<std::size_t>(i) + 1]; };
+    Index last = n - 1;  // the last non-empty domain interval (the domain is not empty: validate())
+    while (empty(last)) --last;
+    Index mu = cur_in.degree;  // the non-empty domain interval [t_mu, t_{mu+1}) holding x (the last one closed)
+    auto advance = [&](double x) {
+      while (mu < last && (empty(mu) || x >= t[static_cast<std::size_t>(mu) + 1])) ++mu;
+    };
     for (double x : rest) {
-      while (s + 1 < spans.size() && x >= cur.knots[static_cast<std::size_t>(spans[s]) + 1]) ++s;
-      double& slot = per_interval[static_cast<std::size_t>(spans[s]) - 1];  // standard mu = paper mu - 1
+      advance(x);
+      double& slot = per_interval[static_cast<std::size_t>(mu) - 1];
       if (std::isnan(slot)) {
         slot = x;
       } else {
         later.push_back(x);
       }
     }
-    RefineSmoothResult r = refine_smooth(polar, per_interval, variant);
-    if (count) *count += r.affine_combinations;
-    cur = to_standard(r.spline, cur.knots.front(), cur.knots.back());
-    rest = std::move(later);
+    long long combinations = 0;
+    SplineCurve next;
+    next.degree = cur_in.degree;
+    const Input in{cur_in.degree, cur_in.knots.data() + 1, static_cast<Index>(m) - 2, &cur_in.control_points};
+    run(in, per_interval, variant, combinations, next.control_points, next.knots, 1);
+    next.knots.front() = cur_in.knots.front();
+    next.knots.back() = cur_in.knots.back();
+    if (count) *count += combinations;
+    cur = std::move(next);
+    from = &cur;
+    rest.swap(later);
   }
   return cur;
 }

@@ -231,3 +231,30 @@ TEST(RefineSmooth, RejectsMisplacedKnots) {
   EXPECT_THROW(refine_smooth(s, {nan_, 1.5, nan_, nan_}), InputError);
   EXPECT_THROW(refine_smooth(s, {nan_}), InputError);
 }
+
+TEST(RefineSmooth, LongCurvesSweptInParallelChunks) {
+  // Beyond 4·2^16 positions the constant-memory variant sweeps chunks on the OpenMP threads (each chunk
+  // started levels + 1 positions early); the result must equal Boehm and the count the §3 variant's.
+  std::mt19937 rng(29);
+  for (int d : {1, 2, 3, 4, 7}) {
+    SplineCurve c = random_curve(rng, d, 150000, d % 2 ? 2 : 3);
+    const std::vector<Index> spans = domain_intervals(c);
+    std::uniform_real_distribution<double> frac(0.05, 0.95);
+    std::bernoulli_distribution pick(0.9);
+    std::vector<double> xs;
+    for (Index mu : spans) {
+      if (!pick(rng)) continue;
+      const double a = c.knots[static_cast<std::size_t>(mu)], b = c.knots[static_cast<std::size_t>(mu) + 1];
+      xs.push_back(a + frac(rng) * (b - a));
+    }
+    long long count_levels = 0, count_stream = 0;
+    const SplineCurve boehm = insert_knots_boehm(c, xs);
+    const SplineCurve levels = refine_smooth(c, xs, RefineSmoothVariant::levels, &count_levels);
+    const SplineCurve stream = refine_smooth(c, xs, RefineSmoothVariant::constant_memory, &count_stream);
+    ASSERT_GT(stream.num_control_points(), 4 * (1 << 16)) << "the parallel path must be reached";
+    ASSERT_EQ(stream.knots, boehm.knots);
+    EXPECT_LE(rel_diff(stream.control_points, boehm.control_points), 1e-12) << "degree " << d;
+    EXPECT_LE(rel_diff(stream.control_points, levels.control_points), 1e-14) << "degree " << d;
+    EXPECT_EQ(count_stream, count_levels) << "degree " << d;
+  }
+}
