@@ -258,3 +258,31 @@ TEST(RefineSmooth, LongCurvesSweptInParallelChunks) {
     EXPECT_EQ(count_stream, count_levels) << "degree " << d;
   }
 }
+
+TEST(RefineSmooth, MatrixEqualsTheOsloMatrix) {
+  // refine_smooth_matrix (degree + 2 runs on sums of unit vectors, columns told apart by supports) against
+  // the Oslo refinement matrix of basis/bspline (blossom rows), with multiple knots and a random subset of
+  // intervals refined at random positions.
+  std::mt19937 rng(41);
+  for (int d = 1; d <= 7; ++d) {
+    for (int breaks : {2, 9, 400}) {
+      const SplineCurve c = random_curve(rng, d, breaks, 1);
+      const std::vector<Index> spans = domain_intervals(c);
+      std::uniform_real_distribution<double> frac(0.1, 0.9);
+      std::bernoulli_distribution pick(0.7);
+      std::vector<double> xs;
+      for (Index mu : spans) {
+        if (!pick(rng)) continue;
+        const double a = c.knots[static_cast<std::size_t>(mu)], b = c.knots[static_cast<std::size_t>(mu) + 1];
+        xs.push_back(a + frac(rng) * (b - a));
+      }
+      std::vector<double> fine_knots;
+      const Eigen::SparseMatrix<double> m = refine_smooth_matrix(d, c.knots, xs, fine_knots);
+      const Eigen::SparseMatrix<double> oslo = basis::bspline::refinement_matrix(
+          basis::bspline::KnotVector(d, c.knots), basis::bspline::KnotVector(d, fine_knots));
+      ASSERT_EQ(m.rows(), oslo.rows());
+      ASSERT_EQ(m.cols(), oslo.cols());
+      EXPECT_LE(Eigen::MatrixXd(oslo - m).cwiseAbs().maxCoeff(), 1e-12) << "degree " << d << " breaks " << breaks;
+    }
+  }
+}
