@@ -1,5 +1,6 @@
 #include "fem/dirichlet.hpp"
 
+#include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 
 #include "core/error.hpp"
@@ -37,17 +38,99 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
   Eigen::VectorXd bd(nd);
   for (Index k = 0; k < nd; ++k) bd(k) = rhs(bc.dofs[static_cast<std::size_t>(k)]);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(mdd);
-  if (solver.info() != Eigen::Success) {
-    throw NumericalError("Dirichlet projection: the boundary mass matrix could not be factorised");
+  if (solver.info() == Eigen::Success && solver.vectorD().minCoeff() > 1e-11 * solver.vectorD().maxCoeff()) {
+    bc.values = solver.solve(bd);
+    return bc;
   }
-  bc.values = solver.solve(bd);
+  // Dependent traces: independent set S by column-pivoted QR, the rest coupled to it.
+  const Eigen::MatrixXd dense(mdd);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(dense);
+  qr.setThreshold(1e-10);
+  const Index rank = qr.rank();
+  if (rank == 0) throw NumericalError("Dirichlet projection: the boundary mass matrix is zero");
+  std::vector<Index> s_local, j_local;
+  std::vector<char> in_s(static_cast<std::size_t>(nd), 0);
+  for (Index k = 0; k < rank; ++k) in_s[static_cast<std::size_t>(qr.colsPermutation().indices()(k))] = 1;
+  for (Index k = 0; k < nd; ++k) (in_s[static_cast<std::size_t>(k)] ? s_local : j_local).push_back(k);
+  const Index ns = static_cast<Index>(s_local.size()), nj = static_cast<Index>(j_local.size());
+  Eigen::MatrixXd mss(ns, ns), msj(ns, nj);
+  Eigen::VectorXd bs(ns);
+  for (Index a = 0; a < ns; ++a) {
+    bs(a) = bd(s_local[static_cast<std::size_t>(a)]);
+    for (Index b = 0; b < ns; ++b) mss(a, b) = dense(s_local[static_cast<std::size_t>(a)], s_local[static_cast<std::size_t>(b)]);
+    for (Index b = 0; b < nj; ++b) msj(a, b) = dense(s_local[static_cast<std::size_t>(a)], j_local[static_cast<std::size_t>(b)]);
+  }
+  const Eigen::LLT<Eigen::MatrixXd> llt(mss);
+  if (llt.info() != Eigen::Success) throw NumericalError("Dirichlet projection: the independent boundary traces are not definite");
+  const Eigen::MatrixXd coupling = llt.solve(msj);
+  // The dependent traces must lie in the span of S: check the residual of M_JJ against the fit.
+  const double scale = dense.cwiseAbs().maxCoeff();
+  std::vector<Index> all_dofs = bc.dofs;
+  bc.dofs.clear();
+  for (Index a : s_local) bc.dofs.push_back(all_dofs[static_cast<std::size_t>(a)]);
+  bc.values = llt.solve(bs);
+  std::vector<Eigen::Triplet<double>> c;
+  for (Index a = 0; a < ns; ++a) {
+    for (Index b = 0; b < nj; ++b) {
+      const double v = coupling(a, b);
+      if (std::abs(v) > 1e-13) c.emplace_back(a, all_dofs[static_cast<std::size_t>(j_local[static_cast<std::size_t>(b)])], v);
+    }
+  }
+  for (Index b = 0; b < nj; ++b) {
+    const Index jb = j_local[static_cast<std::size_t>(b)];
+    const double fit = (msj.col(b).dot(coupling.col(b)));
+    if (std::abs(fit - dense(jb, jb)) > 1e-8 * scale) {
+      throw NumericalError("Dirichlet projection: a boundary trace is not in the span of the independent ones");
+    }
+  }
+  bc.coupling.resize(ns, m.rows());
+  bc.coupling.setFromTriplets(c.begin(), c.end());
   return bc;
 }
+
+namespace {
+
+// Coupled conditions: u = u0 + T w over the dofs that are not constrained.
+ReducedSystem eliminate_coupled(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b,
+                                const DirichletConditions& bc) {
+  const Index n = a.rows();
+  std::vector<Index> map(static_cast<std::size_t>(n), 0);
+  for (Index d : bc.dofs) map[static_cast<std::size_t>(d)] = -1;
+  ReducedSystem sys;
+  for (Index i = 0; i < n; ++i) {
+    if (map[static_cast<std::size_t>(i)] == 0) {
+      map[static_cast<std::size_t>(i)] = static_cast<Index>(sys.free.size());
+      sys.free.push_back(i);
+    }
+  }
+  const Index nf = static_cast<Index>(sys.free.size());
+  std::vector<Eigen::Triplet<double>> t;
+  for (Index k = 0; k < nf; ++k) t.emplace_back(sys.free[static_cast<std::size_t>(k)], k, 1.0);
+  sys.u0 = Eigen::VectorXd::Zero(n);
+  for (std::size_t k = 0; k < bc.dofs.size(); ++k) {
+    sys.u0(bc.dofs[k]) = bc.values(static_cast<Index>(k));
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(bc.coupling, static_cast<Index>(k)); it; ++it) {
+      const Index col = map[static_cast<std::size_t>(it.col())];
+      if (col < 0) throw NumericalError("eliminate: a constrained dof is coupled to another constrained dof");
+      t.emplace_back(bc.dofs[k], col, -it.value());
+    }
+  }
+  sys.t.resize(n, nf);
+  sys.t.setFromTriplets(t.begin(), t.end());
+  const Eigen::SparseMatrix<double> at = a * sys.t;
+  sys.a = sys.t.transpose() * at;
+  sys.a.makeCompressed();
+  sys.b = sys.t.transpose() * (b - a * sys.u0);
+  return sys;
+}
+
+}  // namespace
 
 ReducedSystem eliminate(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b,
                         const DirichletConditions& bc) {
   const Index n = a.rows();
   if (!a.isCompressed()) throw InputError("eliminate: the matrix must be compressed");
+  if (bc.coupling.nonZeros() > 0) return eliminate_coupled(a, b, bc);
   std::vector<Index> map(static_cast<std::size_t>(n), 0);
   for (Index d : bc.dofs) map[static_cast<std::size_t>(d)] = -1;
   ReducedSystem sys;
@@ -104,6 +187,7 @@ ReducedSystem eliminate(const Eigen::SparseMatrix<double>& a, const Eigen::Vecto
 
 Eigen::VectorXd expand(const ReducedSystem& sys, const Eigen::VectorXd& u_free, const DirichletConditions& bc,
                        Index num_dofs) {
+  if (sys.t.cols() > 0) return sys.u0 + sys.t * u_free;
   Eigen::VectorXd u = Eigen::VectorXd::Zero(num_dofs);
   for (std::size_t k = 0; k < sys.free.size(); ++k) u(sys.free[k]) = u_free(static_cast<Index>(k));
   for (std::size_t k = 0; k < bc.dofs.size(); ++k) u(bc.dofs[k]) = bc.values(static_cast<Index>(k));

@@ -8,23 +8,34 @@
 
 namespace iga::fem {
 
-/// Prescribed values u(dofs[k]) = values(k), dofs ascending.
+/// Prescribed values u(dofs[k]) = values(k), dofs ascending; or, when `coupling` is non-empty,
+/// u(dofs[k]) = values(k) − Σ_j coupling(k, j) u(j) with coupling (dofs × num_dofs) zero on the dof columns.
 struct DirichletConditions {
   std::vector<Index> dofs;
   Eigen::VectorXd values;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> coupling;
 };
 
-/// The L2 projection of g onto the span of the functions that are non-zero on `edges`:
-/// M_DD g_D = (∫_Γ g φ_i)_D with M_DD(i, j) = ∫_Γ φ_i φ_j. A function counts as on the boundary when
-/// ∫_Γ φ_i² > 1e-14 · max_k ∫_Γ φ_k². Empty edges give empty conditions.
+/// The L2 projection of g onto the traces of the functions that are non-zero on `edges`. A function counts
+/// as on the boundary when ∫_Γ φ_i² > 1e-14 · max_k ∫_Γ φ_k². When these traces are linearly independent
+/// (B-splines, Catmull–Clark): M_DD g_D = (∫_Γ g φ_i)_D, M_DD(i, j) = ∫_Γ φ_i φ_j, plain prescribed values.
+/// When they are not (a receding boundary, e.g. polyhedral splines, where a boundary curve depends on two
+/// rows of control points): a maximal independent set S of traces is chosen by column-pivoted QR of M_DD
+/// (relative threshold 1e-10), every other trace φ_j|Γ = Σ_s A_sj φ_s|Γ (M_SS A = M_SJ), and the condition
+/// is the affine constraint u_S + A u_J = γ with M_SS γ = (∫_Γ g φ_s)_S: the trace of u_h is the projection of
+/// g, and u_J stays free (so a function whose trace is in the trace space, e.g. an affine solution, is kept
+/// exactly). Empty edges give empty conditions.
 DirichletConditions project_dirichlet(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
                                       std::shared_ptr<const Function> g);
 
-/// The system for the free dofs: A_ff u_f = b_f - A_fd g_d.
+/// The system for the free dofs: A_ff u_f = b_f - A_fd g_d; with coupled conditions u = u0 + T w and
+/// Tᵀ A T w = Tᵀ (b − A u0), T = identity on the free dofs and −coupling on the constrained ones.
 struct ReducedSystem {
   Eigen::SparseMatrix<double> a;
   Eigen::VectorXd b;
   std::vector<Index> free;  ///< global index of each reduced unknown
+  Eigen::SparseMatrix<double> t;  ///< num_dofs × free (coupled conditions only)
+  Eigen::VectorXd u0;             ///< coupled conditions only
 };
 ReducedSystem eliminate(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b,
                         const DirichletConditions& bc);
