@@ -4,11 +4,14 @@
 #include <chrono>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "basis/bspline/patches.hpp"
 #include "basis/catmull_clark/space.hpp"
+#include "basis/polyhedral/configuration.hpp"
+#include "basis/polyhedral/space.hpp"
 #include "core/error.hpp"
 #include "fem/expression.hpp"
 #include "fem/poisson.hpp"
@@ -26,7 +29,7 @@ namespace {
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
-  int degree = 3, refine = -1, threads = 0, samples = 4;
+  int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
   double reaction = 0.0;
   bool quiet = false, mean_zero = false;
 };
@@ -58,14 +61,28 @@ int run(const Options& o) {
     if (!o.quiet) std::cerr << "iga-poisson: " << s << std::endl;
   };
   if (o.threads > 0) fem::set_num_threads(o.threads);
-  if (o.basis != "bspline" && o.basis != "cc") {
-    throw UnsupportedError("--basis " + o.basis + ": not available in this build (available: bspline, cc)");
+  if (o.basis != "bspline" && o.basis != "cc" && o.basis != "polyhedral") {
+    throw UnsupportedError("--basis " + o.basis + ": not available in this build (available: bspline, cc, polyhedral)");
   }
+  if (o.presubdivide > 0 && o.basis != "polyhedral") throw InputError("--presubdivide is for --basis polyhedral");
   // Geometry: for bspline a quad-grid control net from an OBJ file or the embedded quarter annulus; for cc
   // any control net.
   int global_steps = 0;
-  const int refine_steps = o.refine >= 0 ? o.refine : (o.basis == "cc" ? 1 : 4);
+  const int refine_steps = o.refine >= 0 ? o.refine : (o.basis == "cc" ? 1 : o.basis == "polyhedral" ? 0 : 4);
+  int net_steps = 0;  // polyhedral: Catmull–Clark steps of the net (--presubdivide + --refine)
   auto make_coarse = [&]() -> basis::Geometry {
+    if (o.basis == "polyhedral") {
+      // The spaces of refined nets are not nested (no prolongation): the net itself is refined.
+      if (o.mesh.empty()) throw InputError("--basis polyhedral needs --mesh (a polyhedral control net)");
+      net_steps = o.presubdivide + refine_steps;
+      mesh::PolyMesh net = mesh::read_obj(o.mesh);
+      if (net_steps > 0) net = basis::polyhedral::presubdivide(net, net_steps);
+      try {
+        return basis::polyhedral::make_polyhedral_geometry(net);
+      } catch (const basis::polyhedral::UnsupportedConfigurationError& e) {
+        throw InputError(o.mesh, 0, e.what());
+      }
+    }
     if (o.basis == "cc") {
       if (o.mesh.empty()) throw InputError("--basis cc needs --mesh (a control net, e.g. data/meshes/square_evs.obj)");
       basis::Geometry g = basis::catmull_clark::make_catmull_clark_geometry(mesh::read_obj(o.mesh), o.mesh);
@@ -80,7 +97,8 @@ int run(const Options& o) {
                           : basis::bspline::geometry_from_quad_grid(mesh::read_obj(o.mesh), o.degree, o.mesh);
   };
   const basis::Geometry coarse = make_coarse();
-  refine::Refinement refined = refine::refine_uniform(coarse, o.refine_intervals.empty() ? refine_steps : 0);
+  refine::Refinement refined =
+      refine::refine_uniform(coarse, o.refine_intervals.empty() && o.basis != "polyhedral" ? refine_steps : 0);
   if (!o.refine_intervals.empty()) {
     // Each step halves only the listed knot intervals, in both directions (refine-and-smooth).
     if (o.basis != "bspline") throw InputError("--refine-intervals is for --basis bspline");
@@ -138,7 +156,7 @@ int run(const Options& o) {
     problem.neumann_where = std::make_shared<fem::Expression>(o.neumann_where, "--neumann-where");
   }
   problem.mean_zero = o.mean_zero;
-  const int qp = o.basis == "cc" ? 4 : o.degree + 1;
+  const int qp = o.basis == "cc" || o.basis == "polyhedral" ? 4 : o.degree + 1;
   const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? "gauss:" + std::to_string(qp) : o.quadrature, qp);
   const fem::SolverOptions solver{fem::parse_solver(o.solver)};
 
@@ -157,10 +175,17 @@ int run(const Options& o) {
   j["basis"] = o.basis;
   j["mesh"] = o.mesh.empty() ? "default:quarter-annulus" : o.mesh;
   j["dimension"] = geometry.dim();
-  j["degree"] = o.basis == "cc" ? 3 : o.degree;
+  j["degree"] = o.basis == "cc" || o.basis == "polyhedral" ? 3 : o.degree;
   j["refine"] = refine_steps;
   if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
   if (o.basis == "cc") j["cc_global_steps"] = global_steps;
+  if (o.basis == "polyhedral") {
+    j["net_catmull_clark_steps"] = net_steps;
+    std::map<std::string, int> patches;
+    const auto& ps = dynamic_cast<const basis::polyhedral::PolyhedralSpace&>(geometry.space());
+    for (Index e = 0; e < ps.num_elements(); ++e) ++patches[basis::polyhedral::to_string(ps.configuration(e))];
+    j["patches_per_configuration"] = patches;
+  }
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
                   {"source", o.source}, {"dirichlet", o.dirichlet}, {"neumann", o.neumann},
                   {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where}, {"exact", o.exact},
@@ -218,7 +243,8 @@ int main(int argc, char** argv) {
   app.add_option("--basis", o.basis, "basis backend")->check(CLI::IsMember({"bspline", "cc", "halfbox", "polyhedral"}))->capture_default_str();
   app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(CLI::Range(1, 12))->capture_default_str();
   app.add_option("--refine-intervals", o.refine_intervals, "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
-  app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc)")->check(CLI::Range(0, 14));
+  app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for polyhedral, where each step is a Catmull–Clark step of the net)")->check(CLI::Range(0, 14));
+  app.add_option("--presubdivide", o.presubdivide, "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes <= 8 admissible)")->check(CLI::Range(0, 6));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
   app.add_option("--problem", o.problem, "built-in manufactured problem (" + names + "); default sine when no --source/--exact");

@@ -1,0 +1,256 @@
+#include "basis/polyhedral/g1_cap.hpp"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <Eigen/Dense>
+#include <Eigen/SVD>
+
+namespace iga::basis::polyhedral {
+namespace {
+
+constexpr int kCapDegree = 3;
+constexpr int kCapCoefficients = (kCapDegree + 1) * (kCapDegree + 1);
+/// Samples per shared boundary: (4) is a polynomial identity of degree ≤ 7 here (cap cross derivative
+/// of degree 3 times reparameterisations of degree ≤ 2, plus margin), so 12 distinct points force it.
+constexpr int kEdgeSamples = 12;
+/// Relative singular-value threshold of the rank decisions.
+constexpr double kRankTolerance = 1e-10;
+
+double binomial(int n, int k) {
+  if (k < 0 || k > n) return 0.0;
+  double r = 1.0;
+  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+  return r;
+}
+
+/// 5-point Gauss–Legendre rule on [0, 1] (exact to degree 9).
+constexpr std::array<double, 5> kGaussNodes = {0.0469100770306680, 0.2307653449471585, 0.5,
+                                               0.7692346550528415, 0.9530899229693320};
+constexpr std::array<double, 5> kGaussWeights = {0.1184634425280945, 0.2393143352496832,
+                                                 0.2844444444444444, 0.2393143352496832,
+                                                 0.1184634425280945};
+
+/// Derivative (ku, kv) of the 16 bi-3 Bernstein products at (u, v), rows j·4 + i.
+Eigen::VectorXd bicubic_derivative(double u, double v, int ku, int kv) {
+  Eigen::VectorXd r(kCapCoefficients);
+  for (int j = 0; j <= kCapDegree; ++j)
+    for (int i = 0; i <= kCapDegree; ++i)
+      r(j * (kCapDegree + 1) + i) = bernstein_derivative(kCapDegree, i, u, ku) *
+                                    bernstein_derivative(kCapDegree, j, v, kv);
+  return r;
+}
+
+/// Gram matrix of the fairness functional on one bi-3 patch (exact by Gauss quadrature).
+Eigen::MatrixXd fairness_gram(Fairness fairness) {
+  std::vector<std::pair<std::array<int, 2>, double>> terms;
+  if (fairness == Fairness::ThinPlate)
+    terms = {{{2, 0}, 1.0}, {{1, 1}, 2.0}, {{0, 2}, 1.0}};
+  else
+    terms = {{{3, 0}, 1.0}, {{2, 1}, 3.0}, {{1, 2}, 3.0}, {{0, 3}, 1.0}};
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(kCapCoefficients, kCapCoefficients);
+  for (std::size_t a = 0; a < kGaussNodes.size(); ++a)
+    for (std::size_t b = 0; b < kGaussNodes.size(); ++b)
+      for (const auto& [k, w] : terms) {
+        const Eigen::VectorXd d = bicubic_derivative(kGaussNodes[a], kGaussNodes[b], k[0], k[1]);
+        h += (w * kGaussWeights[a] * kGaussWeights[b]) * d * d.transpose();
+      }
+  return h;
+}
+
+}  // namespace
+
+double bernstein(int degree, int i, double t) {
+  if (i < 0 || i > degree) return 0.0;
+  return binomial(degree, i) * std::pow(t, i) * std::pow(1.0 - t, degree - i);
+}
+
+double bernstein_derivative(int degree, int i, double t, int order) {
+  if (order == 0) return bernstein(degree, i, t);
+  if (degree == 0) return 0.0;
+  // d/dt B^d_i = d (B^{d−1}_{i−1} − B^{d−1}_i)
+  return degree * (bernstein_derivative(degree - 1, i - 1, t, order - 1) -
+                   bernstein_derivative(degree - 1, i, t, order - 1));
+}
+
+G1CapSystem::G1CapSystem(int cap_patches, int gathered) : cap_patches_(cap_patches), gathered_(gathered) {
+  for (int k = 0; k < cap_patches; ++k)
+    patches_.push_back(Patch{kCapDegree, kCapDegree, k * kCapCoefficients, Eigen::MatrixXd()});
+}
+
+int G1CapSystem::add_known_patch(int degree_u, int degree_v, Eigen::MatrixXd coefficients) {
+  if (coefficients.rows() != (degree_u + 1) * (degree_v + 1) || coefficients.cols() != gathered_)
+    throw std::invalid_argument("G1CapSystem::add_known_patch: coefficient matrix has the wrong shape");
+  patches_.push_back(Patch{degree_u, degree_v, -1, std::move(coefficients)});
+  return static_cast<int>(patches_.size()) - 1;
+}
+
+Eigen::RowVectorXd G1CapSystem::evaluate(int patch, double u, double v, int du, int dv) const {
+  const Patch& p = patches_.at(static_cast<std::size_t>(patch));
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(cap_patches_ * kCapCoefficients + gathered_);
+  for (int j = 0; j <= p.degree_v; ++j)
+    for (int i = 0; i <= p.degree_u; ++i) {
+      const double w =
+          bernstein_derivative(p.degree_u, i, u, du) * bernstein_derivative(p.degree_v, j, v, dv);
+      const int index = j * (p.degree_u + 1) + i;
+      if (p.offset >= 0)
+        row(p.offset + index) += w;
+      else
+        row.tail(gathered_) += w * p.known.row(index);
+    }
+  return row;
+}
+
+// Directional derivative of order (order_cross along e.cross, order_along along e.along) at e(t); orders ≤ 1.
+Eigen::RowVectorXd G1CapSystem::directional(const CapEdge& e, double t, int order_cross,
+                                            int order_along) const {
+  const Eigen::Vector2d x = e.origin + t * e.along;
+  if (order_cross == 0 && order_along == 0) return evaluate(e.patch, x(0), x(1), 0, 0);
+  const Eigen::Vector2d d = order_cross == 1 ? e.cross : e.along;
+  return d(0) * evaluate(e.patch, x(0), x(1), 1, 0) + d(1) * evaluate(e.patch, x(0), x(1), 0, 1);
+}
+
+void G1CapSystem::add_row(const Eigen::RowVectorXd& row) {
+  const double norm = row.norm();
+  if (norm > 0.0) rows_.push_back(row / norm);
+}
+
+void G1CapSystem::join_c0(const CapEdge& q, const CapEdge& p) {
+  for (int m = 0; m < kEdgeSamples; ++m) {
+    const double t = (m + 0.5) / kEdgeSamples;
+    add_row(directional(q, t, 0, 0) - directional(p, t, 0, 0));
+  }
+}
+
+void G1CapSystem::join_g1(const CapEdge& q, const CapEdge& p, const EdgeFunction& a,
+                          const EdgeFunction& b) {
+  join_c0(q, p);
+  for (int m = 0; m < kEdgeSamples; ++m) {
+    const double t = (m + 0.5) / kEdgeSamples;
+    // (4): ∂_cross q + a ∂_cross p − b ∂_t p = 0
+    add_row(directional(q, t, 1, 0) + a(t) * directional(p, t, 1, 0) - b(t) * directional(p, t, 0, 1));
+  }
+}
+
+CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairness fairness) const {
+  const auto start = std::chrono::steady_clock::now();
+  const int unknowns = cap_patches_ * kCapCoefficients;
+  const int m = static_cast<int>(rows_.size());
+  Eigen::MatrixXd a(m, unknowns), b(m, gathered_);
+  for (int r = 0; r < m; ++r) {
+    a.row(r) = rows_[static_cast<std::size_t>(r)].head(unknowns);
+    b.row(r) = -rows_[static_cast<std::size_t>(r)].tail(gathered_);
+  }
+
+  // rank A and rank [A | B] (both from singular values, relative threshold)
+  Eigen::BDCSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  const double threshold = kRankTolerance * (sigma.size() > 0 ? sigma(0) : 1.0);
+  int rank = 0;
+  while (rank < sigma.size() && sigma(rank) > threshold) ++rank;
+  Eigen::MatrixXd ab(m, unknowns + gathered_);
+  ab << a, b;
+  const Eigen::VectorXd sigma_ab = Eigen::BDCSVD<Eigen::MatrixXd>(ab).singularValues();
+  const double threshold_ab = kRankTolerance * (sigma_ab.size() > 0 ? sigma_ab(0) : 1.0);
+  int rank_ab = 0;
+  while (rank_ab < sigma_ab.size() && sigma_ab(rank_ab) > threshold_ab) ++rank_ab;
+  if (rank_ab != rank)
+    throw std::runtime_error("G1CapSystem: inconsistent constraints for configuration " +
+                             std::to_string(static_cast<int>(configuration)) + ", n = " + std::to_string(valence) + " (rank A = " + std::to_string(rank) +
+                             ", rank [A|B] = " + std::to_string(rank_ab) + ")");
+
+  // particular (least-norm) solution and null space of A
+  const Eigen::MatrixXd& v = svd.matrixV();
+  // x_p = V_r y with y the least-squares solution of (A V_r) y = B (full column rank; a Householder QR
+  // is more accurate here than BDCSVD's U, whose errors reached 1e-11 in A x_p − B for n = 7)
+  const Eigen::MatrixXd v_r = v.leftCols(rank);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a * v_r);
+  Eigen::MatrixXd x_p = v_r * qr.solve(b);
+  x_p += v_r * qr.solve(b - a * x_p);  // one step of iterative refinement
+  const Eigen::MatrixXd null = v.rightCols(unknowns - rank);
+
+  // fairness: minimise (x_p + N z)ᵀ H (x_p + N z) over z
+  const Eigen::MatrixXd h_patch = fairness_gram(fairness);
+  Eigen::MatrixXd x = x_p;
+  if (null.cols() > 0) {
+    Eigen::MatrixXd hn(unknowns, null.cols()), hx(unknowns, gathered_);
+    for (int k = 0; k < cap_patches_; ++k) {
+      const int o = k * kCapCoefficients;
+      hn.middleRows(o, kCapCoefficients) = h_patch * null.middleRows(o, kCapCoefficients);
+      hx.middleRows(o, kCapCoefficients) = h_patch * x_p.middleRows(o, kCapCoefficients);
+    }
+    const Eigen::MatrixXd reduced = null.transpose() * hn;
+    const Eigen::MatrixXd z = reduced.ldlt().solve(-(null.transpose() * hx));
+    x = x_p + null * z;
+  }
+
+  CapDerivation d;
+  d.unknowns = unknowns;
+  d.equations = m;
+  d.rank = rank;
+  d.rank_augmented = rank_ab;
+  d.null_dimension = unknowns - rank;
+  d.constraint_residual = m > 0 ? (a * x - b).cwiseAbs().maxCoeff() : 0.0;
+  d.mask.configuration = configuration;
+  d.mask.valence = valence;
+  d.mask.gathered = gathered_;
+  for (int k = 0; k < cap_patches_; ++k)
+    d.mask.patches.push_back(PatchMask{kCapDegree, kCapDegree, x.middleRows(k * kCapCoefficients, kCapCoefficients)});
+  d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return d;
+}
+
+SectorCapSystem::SectorCapSystem(int sectors, bool split, int gathered)
+    : sectors_(sectors), split_(split), system_(split ? 4 * sectors : sectors, gathered) {
+  if (!split_) return;
+  // C1 between the four sub-patches of every sector (a = 1, b = 0 in (4))
+  const EdgeFunction one = [](double) { return 1.0; };
+  const EdgeFunction zero = [](double) { return 0.0; };
+  for (int k = 0; k < sectors_; ++k) {
+    for (int beta = 0; beta < 2; ++beta)  // across u = 1/2
+      system_.join_g1(CapEdge{4 * k + 2 * beta + 1, {0, 0}, {0, 1}, {1, 0}},
+                      CapEdge{4 * k + 2 * beta, {1, 0}, {0, 1}, {-1, 0}}, one, zero);
+    for (int alpha = 0; alpha < 2; ++alpha)  // across v = 1/2
+      system_.join_g1(CapEdge{4 * k + 2 + alpha, {0, 0}, {1, 0}, {0, 1}},
+                      CapEdge{4 * k + alpha, {0, 1}, {1, 0}, {0, -1}}, one, zero);
+  }
+}
+
+// Sub-patch edge of the sector-level edge e (of sector e.patch) on the segment t ∈ [t0, t0 + 1/2].
+CapEdge SectorCapSystem::segment(const CapEdge& e, double t0) const {
+  const Eigen::Vector2d mid = e.origin + (t0 + 0.25) * e.along;
+  const int alpha = mid(0) < 0.5 ? 0 : 1;
+  const int beta = mid(1) < 0.5 ? 0 : 1;
+  CapEdge s;
+  s.patch = 4 * e.patch + 2 * beta + alpha;
+  s.origin = 2.0 * (e.origin + t0 * e.along) - Eigen::Vector2d(alpha, beta);
+  s.along = e.along;        // τ ∈ [0, 1] covers half the sector edge at twice the sub-patch's scale
+  s.cross = 2.0 * e.cross;  // the sector-level cross derivative
+  return s;
+}
+
+void SectorCapSystem::join(const CapEdge& q, const CapEdge& p, bool p_is_sector, const EdgeFunction& a,
+                           const EdgeFunction& b) {
+  if (!split_) {
+    system_.join_g1(q, p, a, b);
+    return;
+  }
+  for (double t0 : {0.0, 0.5}) {
+    CapEdge ps = p;
+    if (p_is_sector) {
+      ps = segment(p, t0);
+    } else {
+      ps.origin = p.origin + t0 * p.along;
+      ps.along = 0.5 * p.along;
+    }
+    // d/dτ = ½ d/dt on both sides, so b multiplies twice the local tangent
+    system_.join_g1(segment(q, t0), ps, [a, t0](double tau) { return a(t0 + 0.5 * tau); },
+                    [b, t0](double tau) { return 2.0 * b(t0 + 0.5 * tau); });
+  }
+}
+
+}  // namespace iga::basis::polyhedral

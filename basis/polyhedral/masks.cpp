@@ -1,0 +1,77 @@
+#include "basis/polyhedral/masks.hpp"
+
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "basis/polyhedral/bezier.hpp"
+#include "basis/polyhedral/configuration.hpp"
+#include "basis/polyhedral/star_cap.hpp"
+#include "core/error.hpp"
+
+namespace iga::basis::polyhedral {
+namespace {
+
+ConfigurationMask derive(Configuration c, int valence) {
+  ConfigurationMask m;
+  switch (c) {
+    case Configuration::Regular:
+      m.configuration = c;
+      m.valence = 4;
+      m.gathered = 9;
+      m.patches.push_back(regular_mask());
+      break;
+    case Configuration::Star:
+      try {
+        m = star_mask(valence);
+      } catch (const std::exception& e) {
+        throw UnsupportedError("polyhedral splines: no mask for a star of valence " + std::to_string(valence) + " (" +
+                               e.what() + ")");
+      }
+      break;
+    default:
+      throw UnsupportedError("polyhedral splines: the " + to_string(c) + " configuration (valence " +
+                             std::to_string(valence) + ") has no mask in this build yet");
+  }
+  return m;
+}
+
+template <class F>
+const ConfigurationMask& cached(std::map<std::pair<int, int>, ConfigurationMask>& cache, std::mutex& mutex,
+                                Configuration c, int valence, F&& make) {
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto key = std::make_pair(static_cast<int>(c), valence);
+  auto it = cache.find(key);
+  if (it == cache.end()) it = cache.emplace(key, make()).first;
+  return it->second;
+}
+
+}  // namespace
+
+bool has_mask(Configuration c, int valence) {
+  switch (c) {
+    case Configuration::Regular: return true;
+    case Configuration::Star: return valence == 3 || (valence >= 5 && valence <= 8);
+    default: return false;
+  }
+}
+
+const ConfigurationMask& native_mask(Configuration c, int valence) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, ConfigurationMask> cache;
+  return cached(cache, mutex, c, valence, [&] { return derive(c, valence); });
+}
+
+const ConfigurationMask& bicubic_mask(Configuration c, int valence) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, ConfigurationMask> cache;
+  return cached(cache, mutex, c, valence, [&] {
+    ConfigurationMask m = native_mask(c, valence);
+    for (PatchMask& p : m.patches) p = elevate(p, 3, 3);
+    return m;
+  });
+}
+
+}  // namespace iga::basis::polyhedral

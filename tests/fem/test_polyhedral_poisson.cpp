@@ -1,0 +1,81 @@
+// Polyhedral splines through the whole pipeline (basis/polyhedral/space.hpp + fem::solve_poisson): the
+// patch test (an affine solution is reproduced, also through the coupled Dirichlet constraints of the
+// receding boundary) and convergence under Catmull–Clark refinement of the net (the spaces are not nested).
+#include <gtest/gtest.h>
+
+#include "basis/polyhedral/configuration.hpp"
+#include "basis/polyhedral/space.hpp"
+#include "basis/polyhedral_nets.hpp"
+#include "fem/poisson.hpp"
+#include "fem/problems.hpp"
+#include "mesh/obj_reader.hpp"
+#include "quadrature/rule_provider.hpp"
+#include "support/rates.hpp"
+
+using namespace iga;
+using iga::test::fitted_rate;
+
+namespace {
+
+mesh::PolyMesh grid(int n) {
+  std::vector<Eigen::Vector3d> p;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) p.emplace_back(double(i) / (n - 1), double(j) / (n - 1), 0.0);
+  std::vector<std::vector<Index>> f;
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) f.push_back({j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i});
+  return mesh::PolyMesh::build(p, f);
+}
+
+fem::PoissonResult solve(const mesh::PolyMesh& net, const std::string& problem) {
+  const basis::Geometry g = basis::polyhedral::make_polyhedral_geometry(net);
+  const fem::ManufacturedProblem m = fem::manufactured_problem(problem);
+  fem::PoissonProblem p;
+  p.source = m.source;
+  p.dirichlet = m.exact;
+  p.exact = m.exact;
+  return fem::solve_poisson(g, quadrature::Gauss(4), p);
+}
+
+}  // namespace
+
+TEST(PolyhedralPoisson, PatchTest) {
+  std::vector<std::pair<std::string, mesh::PolyMesh>> nets{
+      {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj")}, {"grid", grid(6)}};
+  for (int n : {3, 5, 6, 7, 8}) nets.emplace_back("star " + std::to_string(n), polyhedral_nets::star_net(n, 50 + n, true));
+  for (const auto& [name, net] : nets) {
+    const fem::PoissonResult r = solve(net, "linear");
+    ASSERT_TRUE(r.errors);
+    EXPECT_LE(r.errors->l2 / r.errors->l2_exact, 1e-10) << name;
+    EXPECT_LE(r.errors->h1 / r.errors->h1_exact, 1e-10) << name;
+    EXPECT_GT(r.dirichlet_dofs, 0) << name;
+  }
+}
+
+TEST(PolyhedralPoisson, ConvergenceUnderNetRefinement) {
+  // u = sin πx sin πy, nets refined by 0..3 Catmull–Clark steps (h halves; the receding boundary moves
+  // toward the square, the exact solution is defined everywhere). Regular bi-2 patches only: L2 rate 3,
+  // H1 rate 2 (measured 2.97 / 1.96 on the last pair). With star caps (square_evs.obj: valences 3, 5, 6,
+  // whose caps keep their patch count while the regular part grows) the measured rates are lower:
+  // L2 2.49, 2.30, 2.14 and H1 2.17, 1.75, 1.66 per level — asserted as floors below.
+  struct Case {
+    std::string name;
+    mesh::PolyMesh net;
+    double l2_floor, h1_floor;
+  };
+  std::vector<Case> cases{{"grid", grid(6), 2.9, 1.85},
+                          {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj"), 2.1, 1.6}};
+  for (const Case& c : cases) {
+    std::vector<double> l2, h1;
+    for (int level = 0; level <= 3; ++level) {
+      const mesh::PolyMesh net = level ? basis::polyhedral::presubdivide(c.net, level) : c.net;
+      const fem::PoissonResult r = solve(net, "sine");
+      l2.push_back(r.errors->l2);
+      h1.push_back(r.errors->h1);
+    }
+    const double rl2 = fitted_rate(l2), rh1 = fitted_rate(h1);
+    std::cout << c.name << ": fitted L2 rate " << rl2 << ", H1 rate " << rh1 << std::endl;
+    EXPECT_GE(rl2, c.l2_floor) << c.name;
+    EXPECT_GE(rh1, c.h1_floor) << c.name;
+  }
+}
