@@ -1,7 +1,9 @@
 #include "fem/dirichlet.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseQR>
 
 #include "core/error.hpp"
 
@@ -42,45 +44,67 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
     bc.values = solver.solve(bd);
     return bc;
   }
-  // Dependent traces: independent set S by column-pivoted QR, the rest coupled to it.
-  const Eigen::MatrixXd dense(mdd);
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(dense);
-  qr.setThreshold(1e-10);
+  // Dependent traces: an independent set S by rank-revealing sparse QR (columns whose remaining norm falls
+  // below the threshold are dependent and moved to the end), the rest coupled to S.
+  const double max_diag = mdd.diagonal().maxCoeff();
+  mdd.makeCompressed();
+  Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr;
+  qr.setPivotThreshold(1e-10 * max_diag);
+  qr.compute(mdd);
+  if (qr.info() != Eigen::Success) throw NumericalError("Dirichlet projection: QR of the boundary mass matrix failed");
   const Index rank = qr.rank();
   if (rank == 0) throw NumericalError("Dirichlet projection: the boundary mass matrix is zero");
   std::vector<Index> s_local, j_local;
-  std::vector<char> in_s(static_cast<std::size_t>(nd), 0);
-  for (Index k = 0; k < rank; ++k) in_s[static_cast<std::size_t>(qr.colsPermutation().indices()(k))] = 1;
-  for (Index k = 0; k < nd; ++k) (in_s[static_cast<std::size_t>(k)] ? s_local : j_local).push_back(k);
-  const Index ns = static_cast<Index>(s_local.size()), nj = static_cast<Index>(j_local.size());
-  Eigen::MatrixXd mss(ns, ns), msj(ns, nj);
-  Eigen::VectorXd bs(ns);
-  for (Index a = 0; a < ns; ++a) {
-    bs(a) = bd(s_local[static_cast<std::size_t>(a)]);
-    for (Index b = 0; b < ns; ++b) mss(a, b) = dense(s_local[static_cast<std::size_t>(a)], s_local[static_cast<std::size_t>(b)]);
-    for (Index b = 0; b < nj; ++b) msj(a, b) = dense(s_local[static_cast<std::size_t>(a)], j_local[static_cast<std::size_t>(b)]);
+  std::vector<Index> pos(static_cast<std::size_t>(nd), -1);  // position in S (>= 0) or -(1 + position in J)
+  {
+    std::vector<char> in_s(static_cast<std::size_t>(nd), 0);
+    for (Index k = 0; k < rank; ++k) in_s[static_cast<std::size_t>(qr.colsPermutation().indices()(k))] = 1;
+    for (Index k = 0; k < nd; ++k) {
+      if (in_s[static_cast<std::size_t>(k)]) {
+        pos[static_cast<std::size_t>(k)] = static_cast<Index>(s_local.size());
+        s_local.push_back(k);
+      } else {
+        pos[static_cast<std::size_t>(k)] = -1 - static_cast<Index>(j_local.size());
+        j_local.push_back(k);
+      }
+    }
   }
-  const Eigen::LLT<Eigen::MatrixXd> llt(mss);
-  if (llt.info() != Eigen::Success) throw NumericalError("Dirichlet projection: the independent boundary traces are not definite");
-  const Eigen::MatrixXd coupling = llt.solve(msj);
-  // The dependent traces must lie in the span of S: check the residual of M_JJ against the fit.
-  const double scale = dense.cwiseAbs().maxCoeff();
+  const Index ns = static_cast<Index>(s_local.size()), nj = static_cast<Index>(j_local.size());
+  std::vector<Eigen::Triplet<double>> tss, tsj;
+  for (Index col = 0; col < mdd.outerSize(); ++col) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(mdd, col); it; ++it) {
+      const Index r = pos[static_cast<std::size_t>(it.row())], c = pos[static_cast<std::size_t>(col)];
+      if (r < 0) continue;
+      if (c >= 0) tss.emplace_back(r, c, it.value());
+      else tsj.emplace_back(r, -1 - c, it.value());
+    }
+  }
+  Eigen::SparseMatrix<double> mss(ns, ns), msj(ns, nj);
+  mss.setFromTriplets(tss.begin(), tss.end());
+  msj.setFromTriplets(tsj.begin(), tsj.end());
+  Eigen::VectorXd bs(ns);
+  for (Index a = 0; a < ns; ++a) bs(a) = bd(s_local[static_cast<std::size_t>(a)]);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(mss);
+  if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 0.0) {
+    throw NumericalError("Dirichlet projection: the independent boundary traces are not definite");
+  }
+  const Eigen::MatrixXd coupling = ldlt.solve(Eigen::MatrixXd(msj));
+  // The dependent traces must lie in the span of S: M_JJ(j, j) = M_SJ(:, j) · A(:, j).
   std::vector<Index> all_dofs = bc.dofs;
   bc.dofs.clear();
   for (Index a : s_local) bc.dofs.push_back(all_dofs[static_cast<std::size_t>(a)]);
-  bc.values = llt.solve(bs);
+  bc.values = ldlt.solve(bs);
   std::vector<Eigen::Triplet<double>> c;
-  for (Index a = 0; a < ns; ++a) {
-    for (Index b = 0; b < nj; ++b) {
-      const double v = coupling(a, b);
-      if (std::abs(v) > 1e-13) c.emplace_back(a, all_dofs[static_cast<std::size_t>(j_local[static_cast<std::size_t>(b)])], v);
-    }
-  }
   for (Index b = 0; b < nj; ++b) {
     const Index jb = j_local[static_cast<std::size_t>(b)];
-    const double fit = (msj.col(b).dot(coupling.col(b)));
-    if (std::abs(fit - dense(jb, jb)) > 1e-8 * scale) {
+    double fit = 0.0;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(msj, b); it; ++it) fit += it.value() * coupling(it.row(), b);
+    if (std::abs(fit - mdd.coeff(jb, jb)) > 1e-8 * max_diag) {
       throw NumericalError("Dirichlet projection: a boundary trace is not in the span of the independent ones");
+    }
+    for (Index a = 0; a < ns; ++a) {
+      const double v = coupling(a, b);
+      if (std::abs(v) > 1e-13) c.emplace_back(a, all_dofs[static_cast<std::size_t>(jb)], v);
     }
   }
   bc.coupling.resize(ns, m.rows());
