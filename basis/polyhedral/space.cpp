@@ -6,6 +6,7 @@
 #include <map>
 #include <random>
 #include <tuple>
+#include <unordered_map>
 
 #include "basis/polyhedral/masks.hpp"
 #include "core/error.hpp"
@@ -181,13 +182,22 @@ void PolyhedralSpace::build_boundary() {
     }
   }
   const double tol = 1e-9 * std::max(1.0, scale);
-  auto key = [&](const Eigen::Vector3d& x) {
-    return std::make_tuple(std::llround(x(0) / (16 * tol)), std::llround(x(1) / (16 * tol)), std::llround(x(2) / (16 * tol)));
+  // Every sample point of every side in two grids of cell 16·tol, the second shifted by half a cell:
+  // two points within tol share a cell of at least one grid unless they straddle a cell face of each grid in
+  // different coordinates (probability ~(tol/cell)², negligible).
+  using Key = std::array<long long, 3>;
+  const double cell = 16 * tol;
+  auto key = [&](const Eigen::Vector3d& x, double shift) {
+    return Key{static_cast<long long>(std::floor(x(0) / cell + shift)), static_cast<long long>(std::floor(x(1) / cell + shift)),
+               static_cast<long long>(std::floor(x(2) / cell + shift))};
   };
-  // Every sample point of every side, by rounded position (and its neighbours in each rounding cell).
-  std::map<std::tuple<long long, long long, long long>, std::vector<std::pair<Index, int>>> at;
-  for (Index s = 0; s < nsides; ++s) {
-    for (int k = 0; k < 5; ++k) at[key(samples[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)])].push_back({s, k});
+  std::vector<std::pair<Key, Index>> grid[2];  // sorted by key
+  for (int gi = 0; gi < 2; ++gi) {
+    grid[gi].reserve(static_cast<std::size_t>(5 * nsides));
+    for (Index s = 0; s < nsides; ++s) {
+      for (int k = 0; k < 5; ++k) grid[gi].emplace_back(key(samples[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)], 0.5 * gi), s);
+    }
+    std::sort(grid[gi].begin(), grid[gi].end());
   }
   auto same = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return (a - b).cwiseAbs().maxCoeff() <= tol; };
   // Does side o run along side s, whole (s = o or o reversed) or s being one half of o?
@@ -216,27 +226,20 @@ void PolyhedralSpace::build_boundary() {
     return fwd || rev || h1 || h1r || h2 || h2r || g1 || g1r || g2 || g2r;
   };
   for (Index s = 0; s < nsides; ++s) {
+    // Every side that covers s, or is half of it, passes through s's midpoint (as its midpoint, quarter
+    // point or end point).
     bool covered = false;
-    // Candidates: sides with a sample at s's midpoint (whole or half matches all pass through it, or, for
-    // o half of s, through s's quarter points).
-    for (int k : {1, 2, 3}) {
-      const auto [x, y, z] = key(samples[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)]);
-      for (long long dx = -1; dx <= 1 && !covered; ++dx) {
-        for (long long dy = -1; dy <= 1 && !covered; ++dy) {
-          for (long long dz = -1; dz <= 1 && !covered; ++dz) {
-            const auto it = at.find({x + dx, y + dy, z + dz});
-            if (it == at.end()) continue;
-            for (const auto& [o, ko] : it->second) {
-              (void)ko;
-              if (o / 4 != s / 4 && covers(s, o)) {
-                covered = true;
-                break;
-              }
-            }
-          }
+    const Eigen::Vector3d& mid = samples[static_cast<std::size_t>(s)][2];
+    for (int gi = 0; gi < 2 && !covered; ++gi) {
+      const Key k = key(mid, 0.5 * gi);
+      const auto first = std::lower_bound(grid[gi].begin(), grid[gi].end(), std::make_pair(k, Index{-1}));
+      for (auto it = first; it != grid[gi].end() && it->first == k; ++it) {
+        const Index o = it->second;
+        if (o / 4 != s / 4 && covers(s, o)) {
+          covered = true;
+          break;
         }
       }
-      if (covered) break;
     }
     if (!covered) boundary_.push_back({s / 4, static_cast<int>(s % 4), 0});
   }
