@@ -15,9 +15,10 @@ namespace {
 
 constexpr int kCapDegree = 3;
 constexpr int kCapCoefficients = (kCapDegree + 1) * (kCapDegree + 1);
-/// Samples per shared boundary: (4) is a polynomial identity of degree ≤ 7 here (cap cross derivative
-/// of degree 3 times reparameterisations of degree ≤ 2, plus margin), so 12 distinct points force it.
-constexpr int kEdgeSamples = 12;
+/// Samples per shared boundary: C0 and (4) are polynomial identities of degree 3 in t here (cap cross
+/// derivative: degree 3; a·∂p: 1 + 2; b·∂_t p: 2 + 1 on the outer edges, 1 + 2 on the spokes), so 4
+/// distinct points force them; 8 leave margin for reparameterisations of higher degree.
+constexpr int kEdgeSamples = 8;
 /// Relative singular-value threshold of the rank decisions.
 constexpr double kRankTolerance = 1e-10;
 
@@ -31,17 +32,16 @@ double binomial(int n, int k) {
 /// 5-point Gauss–Legendre rule on [0, 1] (exact to degree 9).
 constexpr std::array<double, 5> kGaussNodes = {0.0469100770306680, 0.2307653449471585, 0.5,
                                                0.7692346550528415, 0.9530899229693320};
-constexpr std::array<double, 5> kGaussWeights = {0.1184634425280945, 0.2393143352496832,
-                                                 0.2844444444444444, 0.2393143352496832,
-                                                 0.1184634425280945};
+constexpr std::array<double, 5> kGaussWeights = {0.1184634425280945, 0.2393143352496832, 0.2844444444444444,
+                                                 0.2393143352496832, 0.1184634425280945};
 
 /// Derivative (ku, kv) of the 16 bi-3 Bernstein products at (u, v), rows j·4 + i.
 Eigen::VectorXd bicubic_derivative(double u, double v, int ku, int kv) {
   Eigen::VectorXd r(kCapCoefficients);
   for (int j = 0; j <= kCapDegree; ++j)
     for (int i = 0; i <= kCapDegree; ++i)
-      r(j * (kCapDegree + 1) + i) = bernstein_derivative(kCapDegree, i, u, ku) *
-                                    bernstein_derivative(kCapDegree, j, v, kv);
+      r(j * (kCapDegree + 1) + i) =
+          bernstein_derivative(kCapDegree, i, u, ku) * bernstein_derivative(kCapDegree, j, v, kv);
   return r;
 }
 
@@ -126,8 +126,7 @@ void G1CapSystem::join_c0(const CapEdge& q, const CapEdge& p) {
   }
 }
 
-void G1CapSystem::join_g1(const CapEdge& q, const CapEdge& p, const EdgeFunction& a,
-                          const EdgeFunction& b) {
+void G1CapSystem::join_g1(const CapEdge& q, const CapEdge& p, const EdgeFunction& a, const EdgeFunction& b) {
   join_c0(q, p);
   for (int m = 0; m < kEdgeSamples; ++m) {
     const double t = (m + 0.5) / kEdgeSamples;
@@ -160,7 +159,8 @@ CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairn
   while (rank_ab < sigma_ab.size() && sigma_ab(rank_ab) > threshold_ab) ++rank_ab;
   if (rank_ab != rank)
     throw std::runtime_error("G1CapSystem: inconsistent constraints for configuration " +
-                             std::to_string(static_cast<int>(configuration)) + ", n = " + std::to_string(valence) + " (rank A = " + std::to_string(rank) +
+                             std::to_string(static_cast<int>(configuration)) +
+                             ", n = " + std::to_string(valence) + " (rank A = " + std::to_string(rank) +
                              ", rank [A|B] = " + std::to_string(rank_ab) + ")");
 
   // particular (least-norm) solution and null space of A
@@ -199,7 +199,8 @@ CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairn
   d.mask.valence = valence;
   d.mask.gathered = gathered_;
   for (int k = 0; k < cap_patches_; ++k)
-    d.mask.patches.push_back(PatchMask{kCapDegree, kCapDegree, x.middleRows(k * kCapCoefficients, kCapCoefficients)});
+    d.mask.patches.push_back(
+        PatchMask{kCapDegree, kCapDegree, x.middleRows(k * kCapCoefficients, kCapCoefficients)});
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }
@@ -248,8 +249,9 @@ void SectorCapSystem::join(const CapEdge& q, const CapEdge& p, bool p_is_sector,
       ps.along = 0.5 * p.along;
     }
     // d/dτ = ½ d/dt on both sides, so b multiplies twice the local tangent
-    system_.join_g1(segment(q, t0), ps, [a, t0](double tau) { return a(t0 + 0.5 * tau); },
-                    [b, t0](double tau) { return 2.0 * b(t0 + 0.5 * tau); });
+    system_.join_g1(
+        segment(q, t0), ps, [a, t0](double tau) { return a(t0 + 0.5 * tau); },
+        [b, t0](double tau) { return 2.0 * b(t0 + 0.5 * tau); });
   }
 }
 

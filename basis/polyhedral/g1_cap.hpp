@@ -44,13 +44,13 @@ enum class Fairness {
 /// Facts about one derivation (for tests and reports).
 struct CapDerivation {
   ConfigurationMask mask;
-  int unknowns = 0;          ///< scalar BB coefficients of the cap (per coordinate)
-  int equations = 0;         ///< rows of the constraint system A x = B g
-  int rank = 0;              ///< rank A
-  int rank_augmented = 0;    ///< rank [A | B]
-  int null_dimension = 0;    ///< unknowns − rank A: the freedom the fairness functional fixes
+  int unknowns = 0;                  ///< scalar BB coefficients of the cap (per coordinate)
+  int equations = 0;                 ///< rows of the constraint system A x = B g
+  int rank = 0;                      ///< rank A
+  int rank_augmented = 0;            ///< rank [A | B]
+  int null_dimension = 0;            ///< unknowns − rank A: the freedom the fairness functional fixes
   double constraint_residual = 0.0;  ///< max |A x − B| of the result
-  double seconds = 0.0;      ///< wall time of the derivation
+  double seconds = 0.0;              ///< wall time of the derivation
 };
 
 class G1CapSystem {
@@ -67,15 +67,15 @@ class G1CapSystem {
   /// C0 and (4) with the given a(t), b(t); q should be a cap patch (p may be either kind).
   void join_g1(const CapEdge& q, const CapEdge& p, const EdgeFunction& a, const EdgeFunction& b);
 
-  /// Solve: checks rank A = rank [A | B] (throws std::runtime_error naming `what` otherwise), then
+  /// Solve: checks rank A = rank [A | B] (throws std::runtime_error naming the configuration otherwise), then
   /// minimises the fairness functional over the null space of A.
   CapDerivation solve(Configuration configuration, int valence, Fairness fairness) const;
 
  private:
   struct Patch {
     int degree_u, degree_v;
-    int offset;               ///< first unknown (cap patch) or −1 (known patch)
-    Eigen::MatrixXd known;    ///< BB × gathered (known patch)
+    int offset;             ///< first unknown (cap patch) or −1 (known patch)
+    Eigen::MatrixXd known;  ///< BB × gathered (known patch)
   };
   /// Row of the extended system [unknowns | gathered] for a derivative (du, dv) at (u, v) of a patch.
   Eigen::RowVectorXd evaluate(int patch, double u, double v, int du, int dv) const;
@@ -101,7 +101,8 @@ class SectorCapSystem {
     return system_.add_known_patch(degree_u, degree_v, std::move(coefficients));
   }
   /// q: edge of sector q.patch; p: edge of sector p.patch (p_is_sector) or of known patch p.patch.
-  void join(const CapEdge& q, const CapEdge& p, bool p_is_sector, const EdgeFunction& a, const EdgeFunction& b);
+  void join(const CapEdge& q, const CapEdge& p, bool p_is_sector, const EdgeFunction& a,
+            const EdgeFunction& b);
   CapDerivation solve(Configuration configuration, int valence, Fairness fairness) const {
     return system_.solve(configuration, valence, fairness);
   }

@@ -18,9 +18,11 @@
 //
 // Patch layout of a mask: patch k of a Star/NGon cap covers sector k (Star: the quad (v, e_k, f_k, e_{k+1});
 // NGon: the corner of F at c_k); with 4n patches (n >= 6) sector k is split into 4 patches (2 × 2), listed
-// sector by sector, each sector row-major in (u, v). Within a patch, u runs along the first named direction
-// (Star: from v toward e_k), v along the second (Star: toward e_{k+1}); BB coefficient b_ij (i along u,
-// j along v) is row  j·(degree_u + 1) + i  of PatchMask::coefficients.
+// sector by sector, each sector row-major in (u, v). Within a patch, u runs along the first named direction,
+// v along the second, counter-clockwise: Star: (0,0) at v, u toward e_k, v toward e_{k+1}; NGon: (0,0) at
+// the centre of F, u toward the midpoint of edge c_{k−1}c_k, v toward the midpoint of c_k c_{k+1}, (1,1) at
+// the centroid of B_k. BB coefficient b_ij (i along u, j along v) is row  j·(degree_u + 1) + i  of
+// PatchMask::coefficients.
 #include <string>
 #include <vector>
 

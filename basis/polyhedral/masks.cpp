@@ -8,6 +8,7 @@
 
 #include "basis/polyhedral/bezier.hpp"
 #include "basis/polyhedral/configuration.hpp"
+#include "basis/polyhedral/ngon_cap.hpp"
 #include "basis/polyhedral/star_cap.hpp"
 #include "core/error.hpp"
 
@@ -28,6 +29,14 @@ ConfigurationMask derive(Configuration c, int valence) {
         m = star_mask(valence);
       } catch (const std::exception& e) {
         throw UnsupportedError("polyhedral splines: no mask for a star of valence " + std::to_string(valence) + " (" +
+                               e.what() + ")");
+      }
+      break;
+    case Configuration::NGon:
+      try {
+        m = ngon_mask(valence);
+      } catch (const std::exception& e) {
+        throw UnsupportedError("polyhedral splines: no mask for an n-gon with n = " + std::to_string(valence) + " (" +
                                e.what() + ")");
       }
       break;
@@ -53,7 +62,8 @@ const ConfigurationMask& cached(std::map<std::pair<int, int>, ConfigurationMask>
 bool has_mask(Configuration c, int valence) {
   switch (c) {
     case Configuration::Regular: return true;
-    case Configuration::Star: return valence == 3 || (valence >= 5 && valence <= 8);
+    case Configuration::Star:
+    case Configuration::NGon: return valence == 3 || (valence >= 5 && valence <= 8);
     default: return false;
   }
 }

@@ -61,9 +61,11 @@ CapDerivation derive(int n, Fairness fairness) {
   for (int k = 0; k < n; ++k) {
     const auto kk = static_cast<std::size_t>(k);
     // outer edge v = 1 (from B_k's centroid at u = 1 to A_k's at u = 0) ↔ bi-2 of p_k
-    system.join({k, {1, 1}, {-1, 0}, {0, -1}}, {bi2_p[kk], {0, 0}, {1, 0}, {0, 1}}, false, r.a_outer, r.b_outer);
+    system.join({k, {1, 1}, {-1, 0}, {0, -1}}, {bi2_p[kk], {0, 0}, {1, 0}, {0, 1}}, false, r.a_outer,
+                r.b_outer);
     // outer edge u = 1 (from B_k's centroid at v = 1 to A_{k−1}'s at v = 0) ↔ bi-2 of r_k
-    system.join({k, {1, 1}, {0, -1}, {-1, 0}}, {bi2_r[kk], {0, 0}, {1, 0}, {0, 1}}, false, r.a_outer, r.b_outer);
+    system.join({k, {1, 1}, {0, -1}, {-1, 0}}, {bi2_r[kk], {0, 0}, {1, 0}, {0, 1}}, false, r.a_outer,
+                r.b_outer);
     // spoke toward A_{k−1}: sector k (edge v = 0) ↔ sector k − 1 (edge u = 0)
     system.join({k, {0, 0}, {1, 0}, {0, 1}}, {wrap(k - 1, n), {0, 0}, {0, 1}, {1, 0}}, true, r.a_spoke,
                 r.b_spoke);

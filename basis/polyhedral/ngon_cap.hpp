@@ -18,7 +18,9 @@
 //    star_reparameterisation(n);
 //  - (4) on the spokes (t = 0 at F's centre) with a_spoke, b_spoke of star_reparameterisation(n);
 //  - n ≥ 6: sectors split 2 × 2, C1 inside;
-//  - the remaining freedom fixed by the thin-plate energy.
+//  - the remaining freedom fixed by minimising ∫ of the squared third derivatives (closer to the reference
+//    surfaces than the thin-plate energy: max distance / bounding-box diagonal 3e-3..1e-2 against
+//    3e-3..1.5e-2).
 // The reference surfaces (tables ngonSct3..8 of the polyhedral_splines code) satisfy (4) with exactly these
 // functions (n = 3, 5: the paper's; n ≥ 6: the same c' as the star caps), which is how they were found.
 #include "basis/polyhedral/g1_cap.hpp"
@@ -35,6 +37,6 @@ int ngon_patch_count(int n);
 ConfigurationMask ngon_mask(int n);
 
 /// The uncached derivation with its diagnostics (ranks, null-space dimension, wall time).
-CapDerivation derive_ngon_cap(int n, Fairness fairness = Fairness::ThinPlate);
+CapDerivation derive_ngon_cap(int n, Fairness fairness = Fairness::ThirdDerivatives);
 
 }  // namespace iga::basis::polyhedral

@@ -1,8 +1,12 @@
 # Sources of the polyhedral-spline backend (paths relative to basis/): classification and Bézier patches,
-# then the mask derivation (star_*, ngon_*, g1_*, cap_*).
+# the mask derivation (g1_cap: the constrained least-squares solver; star_cap, ngon_cap), the masks per
+# configuration and the Space.
 set(IGA_POLYHEDRAL_SOURCES
   polyhedral/configuration.cpp
   polyhedral/bezier.cpp
   polyhedral/g1_cap.cpp
   polyhedral/star_cap.cpp
+  polyhedral/ngon_cap.cpp
+  polyhedral/masks.cpp
+  polyhedral/space.cpp
 )

@@ -47,8 +47,8 @@ CapDerivation derive(int n, const StarReparameterisation& r, Fairness fairness) 
   for (int k = 0; k < n; ++k) bi2.push_back(system.add_known_patch(2, 2, neighbour_bi2(k, n)));
   for (int k = 0; k < n; ++k) {
     // outer boundary toward e_k (sector edge u = 1): s = 1 − t/2 on the bi-2 patch of e_k
-    system.join({k, {1, 1}, {0, -1}, {-1, 0}}, {bi2[static_cast<std::size_t>(k)], {1, 0}, {-0.5, 0}, {0, 0.5}},
-                false, r.a_outer, r.b_outer);
+    system.join({k, {1, 1}, {0, -1}, {-1, 0}},
+                {bi2[static_cast<std::size_t>(k)], {1, 0}, {-0.5, 0}, {0, 0.5}}, false, r.a_outer, r.b_outer);
     // outer boundary toward e_{k+1} (sector edge v = 1): s = t/2 on the bi-2 patch of e_{k+1}
     system.join({k, {1, 1}, {-1, 0}, {0, -1}},
                 {bi2[static_cast<std::size_t>((k + 1) % n)], {0, 0}, {0.5, 0}, {0, 0.5}}, false, r.a_outer,
@@ -68,10 +68,14 @@ double star_outer_c(int n) {
   // squares fit of a, b as cubics in t: a linear, b quadratic/piecewise linear, residual ≤ 5e-10, the size
   // of the tables' watermark perturbations). No closed form was identified; c' ≠ cos(2π/n).
   switch (n) {
-    case 6: return 0.432242987;
-    case 7: return 0.466624530;
-    case 8: return 0.486776405;
-    default: return std::cos(2.0 * std::numbers::pi / n);
+    case 6:
+      return 0.432242987;
+    case 7:
+      return 0.466624530;
+    case 8:
+      return 0.486776405;
+    default:
+      return std::cos(2.0 * std::numbers::pi / n);
   }
 }
 
@@ -86,7 +90,9 @@ StarReparameterisation star_reparameterisation(int n) {
   r.b_outer = [co](double t) { return co * (1.0 - t) * t / (1.0 - co); };
   r.a_spoke = [](double) { return 1.0; };
   // piecewise linear through (0, 2c), (1/2, c'), (1, 0); = 2c(1 − t) when c' = c
-  r.b_spoke = [c, co](double t) { return t <= 0.5 ? 2.0 * c + (co - 2.0 * c) * 2.0 * t : 2.0 * co * (1.0 - t); };
+  r.b_spoke = [c, co](double t) {
+    return t <= 0.5 ? 2.0 * c + (co - 2.0 * c) * 2.0 * t : 2.0 * co * (1.0 - t);
+  };
   return r;
 }
 

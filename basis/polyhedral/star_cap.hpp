@@ -15,7 +15,9 @@
 //  - n ≥ 6: each sector split 2 × 2 (C1 inside the sector); the reparameterisations are not in the paper:
 //    those of star_reparameterisation, recovered from the reference surfaces (star_cap.cpp), applied on
 //    each half of every spoke and outer half-edge;
-//  - the remaining freedom (centre point and tangent plane) fixed by minimising the thin-plate energy.
+//  - the remaining freedom (n = 3, 5: centre point and tangent plane) fixed by minimising ∫ of the squared
+//    third derivatives (closer to the reference surfaces than the thin-plate energy: max distance / bounding-
+//    box diagonal 2e-3..6e-3 against 3e-3..8e-3 on random one-rings).
 #include "basis/polyhedral/g1_cap.hpp"
 #include "basis/polyhedral/mask.hpp"
 
@@ -44,6 +46,6 @@ int star_patch_count(int n);
 ConfigurationMask star_mask(int n);
 
 /// The uncached derivation with its diagnostics (ranks, null-space dimension, wall time).
-CapDerivation derive_star_cap(int n, Fairness fairness = Fairness::ThinPlate);
+CapDerivation derive_star_cap(int n, Fairness fairness = Fairness::ThirdDerivatives);
 
 }  // namespace iga::basis::polyhedral

@@ -28,9 +28,9 @@
 
 namespace {
 
-using iga::basis::polyhedral::ConfigurationMask;
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
+using iga::basis::polyhedral::ConfigurationMask;
 
 const int kValences[] = {3, 5, 6, 7, 8};
 
@@ -43,7 +43,7 @@ int index_p(int k, int n) { return n + 3 * wrap(k, n) + 2; }
 /// A random 3D n-gon configuration in the gather order [c_0, …, c_{n−1}, r_0, d_0, p_0, …], plus the outer
 /// row of the bi-2 patches of every p_k and r_k (not gathered), all perturbed out of any symmetry.
 struct Net {
-  MatrixXd points;                    ///< 4n × 3
+  MatrixXd points;                         ///< 4n × 3
   std::vector<MatrixXd> outer_p, outer_r;  ///< per k: 3 × 3 (w-row 2 of the B-spline grids of p_k, r_k)
 };
 
@@ -51,7 +51,8 @@ Net random_net(int n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> r(-1.0, 1.0);
   auto ring = [&](double radius, double angle) {
-    return Vector3d(radius * std::cos(angle) + 0.2 * r(rng), radius * std::sin(angle) + 0.2 * r(rng), 0.3 * r(rng));
+    return Vector3d(radius * std::cos(angle) + 0.2 * r(rng), radius * std::sin(angle) + 0.2 * r(rng),
+                    0.3 * r(rng));
   };
   Net net;
   net.points.resize(4 * n, 3);
@@ -165,8 +166,8 @@ Jet bi2_r_jet(const Net& net, int n, int k, double s, double w) {
 }
 
 /// The reparameterisation coefficients on the sector level (see star_cap.hpp): the paper's formulas with
-/// c' = c for n = 3, 5, and c' recovered from the reference for n ≥ 6 (star_reparameterisation, cross-checked in
-/// ReferenceSatisfiesRecoveredReparameterisation).
+/// c' = c for n = 3, 5, and c' recovered from the reference for n ≥ 6 (star_reparameterisation, cross-checked
+/// in ReferenceSatisfiesRecoveredReparameterisation).
 struct Reparam {
   double c, co;
   double a_outer(double t) const { return (1.0 - co * (1.0 - t)) / (1.0 - co); }
@@ -220,7 +221,8 @@ Residuals residuals(const std::vector<MatrixXd>& cap, const Net& net, int n, con
           const double u = dir == 0 ? 0.5 : t, v = dir == 0 ? t : 0.5;
           const Jet a = sector_jet(cap, n, k, u, v, false, false);
           const Jet b = sector_jet(cap, n, k, u, v, dir == 0, dir == 1);
-          res.c1_inside = std::max({res.c1_inside, (a.x - b.x).norm(), (a.du - b.du).norm(), (a.dv - b.dv).norm()});
+          res.c1_inside =
+              std::max({res.c1_inside, (a.x - b.x).norm(), (a.du - b.du).norm(), (a.dv - b.dv).norm()});
         }
       }
     }
@@ -314,7 +316,8 @@ MatrixXd read_table(const std::filesystem::path& file) {
       if (!cell.empty()) row.push_back(std::stod(cell));
     rows.push_back(row);
   }
-  MatrixXd m(static_cast<Eigen::Index>(rows.size()), rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
+  MatrixXd m(static_cast<Eigen::Index>(rows.size()),
+             rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t j = 0; j < rows[i].size(); ++j)
       m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
@@ -402,7 +405,9 @@ TEST(PolyhedralNGon, CloseToTheReferenceSurfaces) {
       for (int k = 0; k < n; ++k)
         for (int i = 0; i <= 12; ++i)
           for (int j = 0; j <= 12; ++j)
-            d = std::max(d, (sector_jet(a, n, k, i / 12.0, j / 12.0).x - sector_jet(b, n, k, i / 12.0, j / 12.0).x).norm());
+            d = std::max(
+                d, (sector_jet(a, n, k, i / 12.0, j / 12.0).x - sector_jet(b, n, k, i / 12.0, j / 12.0).x)
+                       .norm());
       worst = std::max(worst, d / diagonal);
     }
     std::cout << "[ngon n=" << n << "] max distance to the reference surface / bounding-box diagonal "

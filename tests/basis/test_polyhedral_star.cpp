@@ -27,9 +27,9 @@
 
 namespace {
 
-using iga::basis::polyhedral::ConfigurationMask;
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
+using iga::basis::polyhedral::ConfigurationMask;
 
 const int kValences[] = {3, 5, 6, 7, 8};
 
@@ -51,7 +51,8 @@ Net random_net(int n, unsigned seed) {
   net.points.row(0) = Vector3d(0.2 * r(rng), 0.2 * r(rng), 0.4 * r(rng));
   for (int k = 0; k < n; ++k) {
     const double a = 2.0 * std::numbers::pi * k / n, b = a + std::numbers::pi / n;
-    net.points.row(index_e(k, n)) = Vector3d(std::cos(a) + 0.3 * r(rng), std::sin(a) + 0.3 * r(rng), 0.5 * r(rng));
+    net.points.row(index_e(k, n)) =
+        Vector3d(std::cos(a) + 0.3 * r(rng), std::sin(a) + 0.3 * r(rng), 0.5 * r(rng));
     net.points.row(index_f(k, n)) =
         Vector3d(1.4 * std::cos(b) + 0.3 * r(rng), 1.4 * std::sin(b) + 0.3 * r(rng), 0.5 * r(rng));
   }
@@ -122,11 +123,11 @@ Jet sector_jet(const std::vector<MatrixXd>& cap, int n, int k, double u, double 
 /// centroid side of quad k−1 to that of quad k, w away from v.
 Jet bi2_jet(const Net& net, int n, int k, double s, double w) {
   const MatrixXd& x = net.points;
-  const Vector3d grid[3][3] = {
-      {x.row(index_e(k - 1, n)), x.row(0), x.row(index_e(k + 1, n))},
-      {x.row(index_f(k - 1, n)), x.row(index_e(k, n)), x.row(index_f(k, n))},
-      {net.outer_row[static_cast<std::size_t>(k % n)].row(0), net.outer_row[static_cast<std::size_t>(k % n)].row(1),
-       net.outer_row[static_cast<std::size_t>(k % n)].row(2)}};
+  const Vector3d grid[3][3] = {{x.row(index_e(k - 1, n)), x.row(0), x.row(index_e(k + 1, n))},
+                               {x.row(index_f(k - 1, n)), x.row(index_e(k, n)), x.row(index_f(k, n))},
+                               {net.outer_row[static_cast<std::size_t>(k % n)].row(0),
+                                net.outer_row[static_cast<std::size_t>(k % n)].row(1),
+                                net.outer_row[static_cast<std::size_t>(k % n)].row(2)}};
   auto n2 = [](int i, double t) {
     return i == 0 ? 0.5 * (1 - t) * (1 - t) : i == 1 ? 0.5 * (-2 * t * t + 2 * t + 1) : 0.5 * t * t;
   };
@@ -142,8 +143,8 @@ Jet bi2_jet(const Net& net, int n, int k, double s, double w) {
 }
 
 /// The reparameterisation coefficients on the sector level (see star_cap.hpp): the paper's formulas with
-/// c' = c for n = 3, 5, and c' recovered from the reference for n ≥ 6 (star_reparameterisation, cross-checked in
-/// ReferenceSatisfiesRecoveredReparameterisation).
+/// c' = c for n = 3, 5, and c' recovered from the reference for n ≥ 6 (star_reparameterisation, cross-checked
+/// in ReferenceSatisfiesRecoveredReparameterisation).
 struct Reparam {
   double c, co;
   double a_outer(double t) const { return (1.0 - co * (1.0 - t)) / (1.0 - co); }
@@ -197,7 +198,8 @@ Residuals residuals(const std::vector<MatrixXd>& cap, const Net& net, int n, con
           const double u = dir == 0 ? 0.5 : t, v = dir == 0 ? t : 0.5;
           const Jet a = sector_jet(cap, n, k, u, v, false, false);
           const Jet b = sector_jet(cap, n, k, u, v, dir == 0, dir == 1);
-          res.c1_inside = std::max({res.c1_inside, (a.x - b.x).norm(), (a.du - b.du).norm(), (a.dv - b.dv).norm()});
+          res.c1_inside =
+              std::max({res.c1_inside, (a.x - b.x).norm(), (a.du - b.du).norm(), (a.dv - b.dv).norm()});
         }
       }
     }
@@ -292,7 +294,8 @@ MatrixXd read_table(const std::filesystem::path& file) {
       if (!cell.empty()) row.push_back(std::stod(cell));
     rows.push_back(row);
   }
-  MatrixXd m(static_cast<Eigen::Index>(rows.size()), rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
+  MatrixXd m(static_cast<Eigen::Index>(rows.size()),
+             rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t j = 0; j < rows[i].size(); ++j)
       m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
@@ -382,7 +385,9 @@ TEST(PolyhedralStar, CloseToTheReferenceSurfaces) {
       for (int k = 0; k < n; ++k)
         for (int i = 0; i <= 12; ++i)
           for (int j = 0; j <= 12; ++j)
-            d = std::max(d, (sector_jet(a, n, k, i / 12.0, j / 12.0).x - sector_jet(b, n, k, i / 12.0, j / 12.0).x).norm());
+            d = std::max(
+                d, (sector_jet(a, n, k, i / 12.0, j / 12.0).x - sector_jet(b, n, k, i / 12.0, j / 12.0).x)
+                       .norm());
       worst = std::max(worst, d / diagonal);
     }
     std::cout << "[star n=" << n << "] max distance to the reference surface / bounding-box diagonal "

@@ -42,7 +42,15 @@ fem::PoissonResult solve(const mesh::PolyMesh& net, const std::string& problem) 
 TEST(PolyhedralPoisson, PatchTest) {
   std::vector<std::pair<std::string, mesh::PolyMesh>> nets{
       {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj")}, {"grid", grid(6)}};
-  for (int n : {3, 5, 6, 7, 8}) nets.emplace_back("star " + std::to_string(n), polyhedral_nets::star_net(n, 50 + n, true));
+  for (int n : {3, 5, 6, 7, 8}) {
+    nets.emplace_back("star " + std::to_string(n), polyhedral_nets::star_net(n, 50 + n, true));
+    const mesh::PolyMesh ngon = polyhedral_nets::ngon_net(n, 60 + n);  // flattened to z = 0
+    std::vector<Eigen::Vector3d> p = ngon.points();
+    for (auto& x : p) x.z() = 0.0;
+    std::vector<std::vector<Index>> faces;
+    for (Index f = 0; f < ngon.num_faces(); ++f) faces.emplace_back(ngon.face(f).begin(), ngon.face(f).end());
+    nets.emplace_back("ngon " + std::to_string(n), mesh::PolyMesh::build(p, faces));
+  }
   for (const auto& [name, net] : nets) {
     const fem::PoissonResult r = solve(net, "linear");
     ASSERT_TRUE(r.errors);
