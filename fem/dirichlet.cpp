@@ -114,19 +114,25 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
 
 namespace {
 
+// The free dofs (not in bc.dofs) in order; returns each dof's position among them, -1 for constrained ones.
+std::vector<Index> number_free(Index n, const DirichletConditions& bc, std::vector<Index>& free) {
+  std::vector<Index> map(static_cast<std::size_t>(n), 0);
+  for (Index d : bc.dofs) map[static_cast<std::size_t>(d)] = -1;
+  for (Index i = 0; i < n; ++i) {
+    if (map[static_cast<std::size_t>(i)] == 0) {
+      map[static_cast<std::size_t>(i)] = static_cast<Index>(free.size());
+      free.push_back(i);
+    }
+  }
+  return map;
+}
+
 // Coupled conditions: u = u0 + T w over the dofs that are not constrained.
 ReducedSystem eliminate_coupled(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b,
                                 const DirichletConditions& bc) {
   const Index n = a.rows();
-  std::vector<Index> map(static_cast<std::size_t>(n), 0);
-  for (Index d : bc.dofs) map[static_cast<std::size_t>(d)] = -1;
   ReducedSystem sys;
-  for (Index i = 0; i < n; ++i) {
-    if (map[static_cast<std::size_t>(i)] == 0) {
-      map[static_cast<std::size_t>(i)] = static_cast<Index>(sys.free.size());
-      sys.free.push_back(i);
-    }
-  }
+  const std::vector<Index> map = number_free(n, bc, sys.free);
   const Index nf = static_cast<Index>(sys.free.size());
   std::vector<Eigen::Triplet<double>> t;
   for (Index k = 0; k < nf; ++k) t.emplace_back(sys.free[static_cast<std::size_t>(k)], k, 1.0);
@@ -155,15 +161,8 @@ ReducedSystem eliminate(const Eigen::SparseMatrix<double>& a, const Eigen::Vecto
   const Index n = a.rows();
   if (!a.isCompressed()) throw InputError("eliminate: the matrix must be compressed");
   if (bc.coupling.nonZeros() > 0) return eliminate_coupled(a, b, bc);
-  std::vector<Index> map(static_cast<std::size_t>(n), 0);
-  for (Index d : bc.dofs) map[static_cast<std::size_t>(d)] = -1;
   ReducedSystem sys;
-  for (Index i = 0; i < n; ++i) {
-    if (map[static_cast<std::size_t>(i)] == 0) {
-      map[static_cast<std::size_t>(i)] = static_cast<Index>(sys.free.size());
-      sys.free.push_back(i);
-    }
-  }
+  const std::vector<Index> map = number_free(n, bc, sys.free);
   const Index nf = static_cast<Index>(sys.free.size());
   // b_f - A_fd g_d: only the Dirichlet columns contribute (A is symmetric, column-major).
   Eigen::VectorXd rhs = b;
