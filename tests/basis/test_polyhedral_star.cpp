@@ -25,8 +25,11 @@
 
 #include "basis/polyhedral/star_cap.hpp"
 
+#include "basis/polyhedral_cap_support.hpp"
+
 namespace {
 
+using namespace polyhedral_cap_support;
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using iga::basis::polyhedral::ConfigurationMask;
@@ -69,54 +72,10 @@ Net random_net(int n, unsigned seed) {
 
 // ---- independent evaluation -------------------------------------------------------------------------
 
-/// Value, ∂u, ∂v of a bi-3 Bézier patch (rows j·4 + i, i along u) at (u, v).
-struct Jet {
-  Vector3d x, du, dv;
-};
 
-double bern3(int i, double t) {
-  const double c[4] = {1, 3, 3, 1};
-  return c[i] * std::pow(t, i) * std::pow(1.0 - t, 3 - i);
-}
-double bern3_d(int i, double t) {  // d/dt B^3_i = 3 (B^2_{i−1} − B^2_i)
-  auto b2 = [](int j, double s) {
-    const double c[3] = {1, 2, 1};
-    return (j < 0 || j > 2) ? 0.0 : c[j] * std::pow(s, j) * std::pow(1.0 - s, 2 - j);
-  };
-  return 3.0 * (b2(i - 1, t) - b2(i, t));
-}
 
-Jet bezier3(const MatrixXd& bb, double u, double v) {
-  Jet j{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
-  for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) {
-      const Vector3d p = bb.row(b * 4 + a).transpose();
-      j.x += bern3(a, u) * bern3(b, v) * p;
-      j.du += bern3_d(a, u) * bern3(b, v) * p;
-      j.dv += bern3(a, u) * bern3_d(b, v) * p;
-    }
-  return j;
-}
 
-/// The cap of one net: per patch its 16 BB points.
-std::vector<MatrixXd> apply(const ConfigurationMask& mask, const MatrixXd& points) {
-  std::vector<MatrixXd> out;
-  for (const auto& p : mask.patches) out.push_back(p.coefficients * points);
-  return out;
-}
 
-/// Sector-level jet of a cap: sector k, sector parameters (u, v) ∈ [0, 1]²; a split cap (4n patches) picks
-/// sub-patch (α, β) (α = 1 iff u > 1/2, or u = 1/2 with `right`), derivatives scaled to the sector.
-Jet sector_jet(const std::vector<MatrixXd>& cap, int n, int k, double u, double v, bool right_u = false,
-               bool right_v = false) {
-  if (static_cast<int>(cap.size()) == n) return bezier3(cap[static_cast<std::size_t>(k)], u, v);
-  const int alpha = (u > 0.5 || (u == 0.5 && right_u)) ? 1 : 0;
-  const int beta = (v > 0.5 || (v == 0.5 && right_v)) ? 1 : 0;
-  Jet j = bezier3(cap[static_cast<std::size_t>(4 * k + 2 * beta + alpha)], 2 * u - alpha, 2 * v - beta);
-  j.du *= 2.0;
-  j.dv *= 2.0;
-  return j;
-}
 
 /// The bi-2 patch of e_k straight from the uniform biquadratic B-spline basis on its 3 × 3 grid
 /// (w-row 0: e_{k−1}, v, e_{k+1}; w-row 1: f_{k−1}, e_k, f_k; w-row 2: the random outer row), s from the
@@ -277,30 +236,7 @@ TEST(PolyhedralStar, PartitionOfUnityAndLinearPrecision) {
 
 // ---- comparison with the reference tables -----------------------------------------------------------
 
-std::filesystem::path reference_tables() {
-  return std::filesystem::path(IGA_SOURCE_DIR "/../shared/reference/polyhedral") / "src" / "Patch" / "Table";
-}
 
-MatrixXd read_table(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<double> row;
-    while (std::getline(ss, cell, ','))
-      if (!cell.empty()) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  MatrixXd m(static_cast<Eigen::Index>(rows.size()),
-             rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    for (std::size_t j = 0; j < rows[i].size(); ++j)
-      m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
-  return m;
-}
 
 /// The reference table eopSct<n> in our layout (mask.hpp), rows renormalised to sum 1 (README: the
 /// watermark leaves row sums off by up to 4e-9). Facts about the reference layout (public repository
