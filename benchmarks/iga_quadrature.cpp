@@ -1,17 +1,30 @@
 // iga-quadrature: the area of a planar Catmull–Clark net or the volume enclosed by a closed one, exactly
 // (geometric series) or with a quadrature rule, with the number of points spent around extraordinary
 // vertices and the error against the exact value. Thin: parses options and calls the library.
+//
+// --quantity mass | stiffness: the matrices ∫ φ_a φ_b and ∫ ∇φ_a·∇φ_b (gradient in the element's parameters
+// (u, v), i.e. planar Poisson on the parameter domain) of the elements at extraordinary vertices, by the rule
+// and exactly (quadrature/exact/irregular_integrals.hpp), with the max-abs and relative Frobenius error:
+//   --valence N: the single irregular element of valence N (its 2n+8 Stam functions; no mesh);
+//   --mesh NET:  every element of the net evaluated by Stam's method (interior EVs with a complete ring),
+//                assembled over the net's dofs, so the comparison is of ring sums (where the folded macro
+//                rules are exact; per element they are not). Elements at boundary EVs are left out (no exact
+//                integrals for them).
 #include <CLI/CLI.hpp>
 #include <iomanip>
+#include <memory>
+#include <vector>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "basis/catmull_clark/space.hpp"
+#include "basis/catmull_clark/stam.hpp"
 #include "core/error.hpp"
 #include "fem/assembler.hpp"
 #include "io/report.hpp"
 #include "mesh/obj_reader.hpp"
 #include "quadrature/exact/geometry_integrals.hpp"
+#include "quadrature/exact/irregular_integrals.hpp"
 #include "quadrature/rule_provider.hpp"
 
 namespace {
@@ -33,18 +46,142 @@ double integrate(const iga::basis::Geometry& g, const iga::quadrature::RuleProvi
   })(0);
 }
 
+// One Stam-evaluated element: its valence, its evaluator, the map from its dofs to Stam's local points
+// (identity for --valence) and the dofs' indices in the compared matrix.
+struct StamElement {
+  int valence = 0;
+  const iga::basis::catmull_clark::StamEvaluator* stam = nullptr;
+  Eigen::MatrixXd map;  // (2n+8) × dofs
+  std::vector<Eigen::Index> dofs;
+};
+
+struct MatrixComparison {
+  Eigen::MatrixXd exact, by_rule;
+  long elements = 0, points = 0;
+};
+
+// Exact and quadrature element matrices (mass: values; stiffness: parametric gradients), summed into one
+// matrix over the elements.
+MatrixComparison compare_matrices(const std::vector<StamElement>& elements, Eigen::Index size, bool stiffness,
+                                  const iga::quadrature::RuleProvider* rules) {
+  MatrixComparison out;
+  out.exact = Eigen::MatrixXd::Zero(size, size);
+  out.by_rule = Eigen::MatrixXd::Zero(size, size);
+  for (const StamElement& el : elements) {
+    const auto& ex = iga::quadrature::exact::irregular_integrals(el.valence);
+    const Eigen::MatrixXd local = stiffness ? Eigen::MatrixXd(ex.d[0][0] + ex.d[1][1]) : ex.phi_phi;
+    const Eigen::MatrixXd exact = el.map.transpose() * local * el.map;
+    Eigen::MatrixXd quad = exact;
+    if (rules != nullptr) {
+      iga::basis::ElementKind kind;
+      kind.family = iga::basis::Family::Irregular;
+      kind.valence = el.valence;
+      const iga::quadrature::Rule& rule = rules->rule(kind);
+      iga::basis::BasisValues bv;
+      el.stam->evaluate(rule.points, stiffness ? 1 : 0, bv);
+      const Eigen::VectorXd& w = rule.weights;
+      const Eigen::MatrixXd local_q = stiffness ? Eigen::MatrixXd(bv.du * w.asDiagonal() * bv.du.transpose() +
+                                                                  bv.dv * w.asDiagonal() * bv.dv.transpose())
+                                                : Eigen::MatrixXd(bv.value * w.asDiagonal() * bv.value.transpose());
+      quad = el.map.transpose() * local_q * el.map;
+      out.points += rule.size();
+    }
+    for (std::size_t i = 0; i < el.dofs.size(); ++i) {
+      for (std::size_t j = 0; j < el.dofs.size(); ++j) {
+        const auto a = static_cast<Eigen::Index>(i), b = static_cast<Eigen::Index>(j);
+        out.exact(el.dofs[i], el.dofs[j]) += exact(a, b);
+        out.by_rule(el.dofs[i], el.dofs[j]) += quad(a, b);
+      }
+    }
+    ++out.elements;
+  }
+  return out;
+}
+
+// The Stam elements of --valence N (one element) or of a net (all elements evaluated by Stam's method).
+std::vector<StamElement> stam_elements(const std::string& mesh, int valence, Eigen::Index& size) {
+  using namespace iga;
+  std::vector<StamElement> out;
+  if (mesh.empty()) {
+    StamElement el;
+    el.valence = valence;
+    el.stam = &basis::catmull_clark::stam_evaluator(valence);
+    const int p = 2 * valence + 8;
+    el.map = Eigen::MatrixXd::Identity(p, p);
+    for (int i = 0; i < p; ++i) el.dofs.push_back(i);
+    size = p;
+    out.push_back(std::move(el));
+    return out;
+  }
+  const basis::catmull_clark::CatmullClarkSpace space(mesh::read_obj(mesh), mesh);
+  std::vector<Eigen::Index> compact(static_cast<std::size_t>(space.num_dofs()), -1);
+  size = 0;
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    if (space.stam(e) == nullptr) continue;
+    StamElement el;
+    el.valence = space.kind(e).valence;
+    el.stam = &basis::catmull_clark::stam_evaluator(el.valence);  // the cached evaluator, outlives `space`
+    el.map = space.stam_map(e);
+    for (const Index d : space.dofs(e)) {
+      auto& c = compact[static_cast<std::size_t>(d)];
+      if (c < 0) c = size++;
+      el.dofs.push_back(c);
+    }
+    out.push_back(std::move(el));
+  }
+  if (out.empty()) throw InputError(mesh, 0, "no element at an interior extraordinary vertex (evaluated by Stam's method)");
+  return out;
+}
+
+int run_matrices(const std::string& mesh, int valence, const std::string& quantity, const std::string& method,
+                 const std::string& json) {
+  using namespace iga;
+  if (mesh.empty() == (valence == 0)) throw InputError("--quantity " + quantity + " needs exactly one of --mesh and --valence");
+  if (valence != 0 && (valence < 3 || valence > 16)) throw InputError("--valence must be 3..16, got " + std::to_string(valence));
+  Eigen::Index size = 0;
+  const std::vector<StamElement> elements = stam_elements(mesh, valence, size);
+  std::unique_ptr<quadrature::RuleProvider> rules;
+  if (method != "exact") rules = quadrature::make_rule_provider(method, 4);
+  const MatrixComparison c = compare_matrices(elements, size, quantity == "stiffness", rules.get());
+  const double max_abs = (c.by_rule - c.exact).cwiseAbs().maxCoeff();
+  const double rel = (c.by_rule - c.exact).norm() / c.exact.norm();
+  nlohmann::json report = {{"program", "iga-quadrature"}, {"quantity", quantity}, {"method", method},
+                           {"irregular_elements", c.elements}, {"matrix_size", size},
+                           {"exact_frobenius", c.exact.norm()}, {"max_abs_error", max_abs},
+                           {"relative_frobenius_error", rel}, {"relative_error", rel},
+                           {"points_around_evs", c.points},
+                           {"points_per_irregular_element", c.elements ? c.points / c.elements : 0}};
+  if (mesh.empty()) {
+    report["valence"] = valence;
+  } else {
+    report["mesh"] = mesh;
+  }
+  std::cout << quantity << " matrix " << size << " x " << size << " over " << c.elements << " element(s): max-abs error "
+            << std::setprecision(3) << max_abs << ", relative Frobenius error " << rel << ", " << c.points
+            << " points around EVs" << std::endl;
+  if (!json.empty()) io::write_json(json, report);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"iga-quadrature: area or enclosed volume of a Catmull–Clark surface, exactly or by quadrature"};
+  CLI::App app{"iga-quadrature: area or enclosed volume of a Catmull–Clark surface, or the mass/stiffness matrix "
+               "at extraordinary vertices, exactly or by quadrature"};
   std::string mesh, quantity = "area", method = "exact", json;
-  app.add_option("--mesh", mesh, "control net (OBJ)")->required()->check(CLI::ExistingFile);
-  app.add_option("--quantity", quantity, "area (planar net) or volume (closed net)")->check(CLI::IsMember({"area", "volume"}))->capture_default_str();
-  app.add_option("--method", method, "exact, tiles:P:L, macro:R[:L] or fitted")->capture_default_str();
+  int valence = 0;
+  app.add_option("--mesh", mesh, "control net (OBJ); required for area and volume")->check(CLI::ExistingFile);
+  app.add_option("--valence", valence, "mass/stiffness: the single irregular element of this valence (3..16), no mesh");
+  app.add_option("--quantity", quantity, "area (planar net), volume (closed net), mass or stiffness (matrices at EVs)")
+      ->check(CLI::IsMember({"area", "volume", "mass", "stiffness"}))->capture_default_str();
+  app.add_option("--method", method, "exact, gauss:P, tiles:P:L, macro:R[:L] or fitted[:SPACE][:DIR]")->capture_default_str();
   app.add_option("--json", json, "JSON report file");
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace iga;
+    if (quantity == "mass" || quantity == "stiffness") return run_matrices(mesh, valence, quantity, method, json);
+    if (mesh.empty()) throw InputError("--quantity " + quantity + " needs --mesh");
+    if (valence != 0) throw InputError("--valence is only for --quantity mass or stiffness");
     const basis::Geometry g = basis::catmull_clark::make_catmull_clark_geometry(mesh::read_obj(mesh), mesh);
     const bool volume = quantity == "volume";
     if (!volume && g.dim() != 2) throw InputError(mesh, 0, "--quantity area needs a planar net (all z = 0)");

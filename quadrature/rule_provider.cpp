@@ -60,14 +60,24 @@ std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int de
     const int levels = parts.size() == 3 ? parse_count(parts[2], spec, expected) : 8;
     return spline_gauss::make_macro_patch(r, levels);
   }
-  if (method == "fitted" && parts.size() <= 2) {
-    // Tables made by tools/fit_quadrature.cpp: fitted:DIR, else $IGA_QUADRATURE_DIR, else the source tree's.
+  if (method == "fitted") {
+    // Tables made by tools/fit_quadrature.cpp: fitted[:SPACE][:DIR]; SPACE phi (default), mass or stiffness;
+    // DIR, else $IGA_QUADRATURE_DIR, else the source tree's data/quadrature. DIR may itself contain ':'.
     std::string dir = IGA_QUADRATURE_DATA_DIR;
     if (const char* env = std::getenv("IGA_QUADRATURE_DIR")) dir = env;
-    if (parts.size() == 2) dir = spec.substr(spec.find(':') + 1);
-    return moment_fit::make_fitted(dir);
+    moment_fit::Space space = moment_fit::Space::Phi;
+    std::string rest = parts.size() >= 2 ? spec.substr(spec.find(':') + 1) : std::string();
+    if (parts.size() >= 2 && (parts[1] == "phi" || parts[1] == "mass" || parts[1] == "stiffness")) {
+      space = moment_fit::parse_space(parts[1]);
+      rest = parts.size() >= 3 ? rest.substr(rest.find(':') + 1) : std::string();
+      if (parts.size() >= 3 && rest.empty()) throw InputError("quadrature '" + spec + "': empty directory after the space");
+    } else if (parts.size() >= 2 && rest.empty()) {
+      throw InputError("quadrature '" + spec + "': expected fitted[:SPACE][:DIR] with SPACE phi, mass or stiffness");
+    }
+    if (!rest.empty()) dir = rest;
+    return moment_fit::make_fitted(dir, space);
   }
-  throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L, macro:R[:L], fitted[:DIR])");
+  throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L, macro:R[:L], fitted[:SPACE][:DIR])");
 }
 
 }  // namespace iga::quadrature

@@ -37,8 +37,9 @@ class Gauss final : public RuleProvider {
 };
 
 /// Makes a provider from a specification: "gauss:P", "tiles:P:L" (PerTile), "macro:R[:L]" (strip and macro
-/// Gauss rules for spline spaces, spline_gauss::MacroPatch), "fitted[:DIR]" (moment-fitted tables,
-/// moment_fit::Fitted; DIR defaults to $IGA_QUADRATURE_DIR, else the source tree's data/quadrature).
+/// Gauss rules for spline spaces, spline_gauss::MacroPatch), "fitted[:SPACE][:DIR]" (moment-fitted tables,
+/// moment_fit::Fitted; SPACE phi (the default), mass or stiffness selects the cc_<SPACE>_n<N> tables; DIR
+/// defaults to $IGA_QUADRATURE_DIR, else the source tree's data/quadrature; "fitted:DIR" is phi tables in DIR).
 /// `default_points` is used for a bare "gauss".
 /// Throws InputError naming the specification when it is not understood.
 std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int default_points);

@@ -4,16 +4,23 @@
 // For each valence n: q = n + start, n + start + 1, ... until a rule converges (||Φw − b|| <= tolerance,
 // weights > 0, points in [lower, 1]²); prints every q tried with its success count over the random starts and
 // writes the first converged rule of the smallest q to <output>/cc_<space>_n<N>[_sym].txt.
+// --first-points/--last-points give the q range directly (the mass and stiffness spaces need far more points
+// than n + 4). --rank prints instead the numerical rank of the space's functions (SVD of their values at
+// random points on every tile level), which bounds the points a rule needs from below (3q >= rank).
 #include <CLI/CLI.hpp>
+#include <Eigen/SVD>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <random>
 
 #include "core/error.hpp"
 #include "quadrature/moment_fit/fit.hpp"
 #include "quadrature/moment_fit/table.hpp"
+#include "quadrature/per_tile.hpp"
 
 namespace mf = iga::quadrature::moment_fit;
 
@@ -22,6 +29,10 @@ namespace {
 struct Settings {
   int min_valence = 3, max_valence = 8;
   int start = 4, max_extra = 6;
+  int first_points = 0, last_points = 0;  // absolute q range; 0: from start / max_extra
+  int step = 1;                           // q increment
+  bool rank = false;
+  std::vector<int> eliminate;  // P L: node elimination from tiled_rule(P, L) instead of random starts
   std::string space = "phi";
   std::string output;
   bool survey = false;
@@ -49,9 +60,73 @@ mf::FitResult try_fit(int n, int q, int diagonal, const Settings& s) {
   return r;
 }
 
+// Numerical rank of the functions of the space: singular values of F (functions × points) at 4 (functions)
+// points, a quarter uniform in [0,1]², the others uniform in [0, 2^-k]² for k = 1..12 (the tiles near the EV).
+// rank = #{σ_i > 1e-10 σ_1}; prints the singular values either side of the cut so the gap can be judged.
+void print_rank(int n, const Settings& s) {
+  const mf::Space space = mf::parse_space(s.space);
+  const int m = mf::num_functions(n, space);
+  const int count = 4 * m;
+  std::mt19937 gen(s.fit.seed);
+  auto uniform = [&] { return (static_cast<double>(gen()) + 0.5) / 4294967296.0; };
+  Eigen::Matrix2Xd pts(2, count);
+  for (int i = 0; i < count; ++i) {
+    const double scale = i < count / 4 ? 1.0 : std::ldexp(1.0, -(1 + i % 12));
+    pts.col(i) << scale * uniform(), scale * uniform();
+  }
+  Eigen::MatrixXd f;
+  mf::evaluate_functions(n, space, pts, f);
+  // Rows scaled to unit norm so that no function dominates the cut.
+  for (Eigen::Index r = 0; r < f.rows(); ++r) f.row(r) /= std::max(f.row(r).norm(), 1e-300);
+  const Eigen::BDCSVD<Eigen::MatrixXd> svd(f);
+  const Eigen::VectorXd sv = svd.singularValues();
+  int rank = 0;
+  while (rank < sv.size() && sv(rank) > 1e-10 * sv(0)) ++rank;
+  std::printf("n=%2d space=%s functions %d rank %d (sigma[rank-1] = %.2e, sigma[rank] = %.2e relative) -> q >= %d;"
+              " count of sigma_i/sigma_1 above", n, s.space.c_str(), m, rank, sv(rank - 1) / sv(0),
+              rank < sv.size() ? sv(rank) / sv(0) : 0.0, (rank + 2) / 3);
+  for (const double cut : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14}) {
+    int k = 0;
+    while (k < sv.size() && sv(k) > cut * sv(0)) ++k;
+    std::printf(" %.0e: %d", cut, k);
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+// Node elimination from the per-tile rule; writes the smallest converged rule.
+void run_elimination(int n, const Settings& s) {
+  mf::FitOptions o = s.fit;
+  o.space = mf::parse_space(s.space);
+  const auto t0 = std::chrono::steady_clock::now();
+  const iga::quadrature::Rule start = iga::quadrature::tiled_rule(s.eliminate[0], s.eliminate[1]);
+  const mf::FitResult r = mf::eliminate_points(n, start, o, std::max(1, s.first_points));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("n=%2d space=%s elimination from tiles:%d:%d (%d points): %s q=%d residual %.2e min weight %.3e "
+              "(||b|| = %.2e; %d removal steps tried, %.1f s)\n", n, s.space.c_str(), s.eliminate[0], s.eliminate[1],
+              static_cast<int>(start.size()), r.converged ? "CONVERGED" : "start not exact", r.points, r.residual,
+              r.rule.weights.minCoeff(), mf::moments(n, o.space).norm(), std::max(0, static_cast<int>(r.attempts.size()) - 1), seconds);
+  std::fflush(stdout);
+  if (r.converged && !s.output.empty()) {
+    mf::Table t;
+    t.valence = n;
+    t.space = r.space;
+    t.residual = r.residual;
+    t.rule = r.rule;
+    t.note = "node elimination from tiles:" + std::to_string(s.eliminate[0]) + ":" + std::to_string(s.eliminate[1]) +
+             " (iga-fit-quadrature --eliminate " + std::to_string(s.eliminate[0]) + " " +
+             std::to_string(s.eliminate[1]) + "); seed 0 attempt 0: deterministic";
+    const auto path = std::filesystem::path(s.output) / mf::table_file_name(n, r.space, false);
+    mf::write_table(path.string(), t);
+    std::printf("  wrote %s\n", path.string().c_str());
+  }
+}
+
 void run_valence(int n, const Settings& s) {
   const auto t0 = std::chrono::steady_clock::now();
-  for (int q = std::max(1, n + s.start); q <= n + 4 + s.max_extra; ++q) {
+  const int first = s.first_points > 0 ? s.first_points : std::max(1, n + s.start);
+  const int last = s.last_points > 0 ? s.last_points : n + 4 + s.max_extra;
+  for (int q = first; q <= last; q += s.step) {
     std::vector<int> diagonals{-1};
     if (s.symmetric) {
       diagonals.clear();
@@ -82,7 +157,7 @@ void run_valence(int n, const Settings& s) {
       }
     }
   }
-  std::printf("n=%2d: no rule up to q = %d\n", n, n + 4 + s.max_extra);
+  std::printf("n=%2d: no rule up to q = %d\n", n, last);
 }
 
 }  // namespace
@@ -94,6 +169,12 @@ int main(int argc, char** argv) {
   app.add_option("--max-valence", s.max_valence, "largest valence (3..16)");
   app.add_option("--start", s.start, "first q = n + start");
   app.add_option("--max-extra", s.max_extra, "last q = n + 4 + max-extra");
+  app.add_option("--first-points", s.first_points, "first q (overrides --start)");
+  app.add_option("--last-points", s.last_points, "last q (overrides --max-extra)");
+  app.add_option("--step", s.step, "q increment")->check(CLI::PositiveNumber);
+  app.add_option("--eliminate", s.eliminate, "P L: node elimination from the per-tile rule tiles:P:L (then "
+                 "--attempts = candidates tried per removal, --first-points = smallest q)")->expected(2);
+  app.add_flag("--rank", s.rank, "print the numerical rank of the space per valence instead of fitting");
   app.add_option("--space", s.space, "phi | mass | stiffness");
   app.add_option("--output", s.output, "directory for the tables (none: do not write)");
   app.add_flag("--survey", s.survey, "run every random start (success rates) instead of stopping at the first");
@@ -109,7 +190,15 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     mf::parse_space(s.space);
-    for (int n = s.min_valence; n <= s.max_valence; ++n) run_valence(n, s);
+    for (int n = s.min_valence; n <= s.max_valence; ++n) {
+      if (s.rank) {
+        print_rank(n, s);
+      } else if (!s.eliminate.empty()) {
+        run_elimination(n, s);
+      } else {
+        run_valence(n, s);
+      }
+    }
   } catch (const iga::Error& e) {
     std::cerr << "iga-fit-quadrature: " << e.what() << "\n";
     return 1;

@@ -116,6 +116,34 @@ int FitResult::successes() const {
 
 namespace {
 
+// U^T for Problem::projection: left singular vectors of the function values (functions × 4·functions points,
+// a quarter uniform in [0,1]², the others in [0, 2^-k]², k = 1..12, fixed seed) with σ > 1e-14 σ_1. Cached.
+const Eigen::MatrixXd& range_projection(int valence, Space space) {
+  static std::mutex mutex;
+  static std::map<std::pair<int, int>, Eigen::MatrixXd> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& p = cache[{valence, static_cast<int>(space)}];
+  if (p.size() == 0) {
+    const int m = num_functions(valence, space), count = 4 * m;
+    std::mt19937 gen(12345);
+    Eigen::Matrix2Xd pts(2, count);
+    for (int i = 0; i < count; ++i) {
+      const double scale = i < count / 4 ? 1.0 : std::ldexp(1.0, -(1 + i % 12));
+      const double u = (static_cast<double>(gen()) + 0.5) / 4294967296.0;
+      const double v = (static_cast<double>(gen()) + 0.5) / 4294967296.0;
+      pts.col(i) << scale * u, scale * v;
+    }
+    Eigen::MatrixXd f;
+    evaluate_functions(valence, space, pts, f);
+    const Eigen::BDCSVD<Eigen::MatrixXd> svd(f, Eigen::ComputeThinU);
+    const Eigen::VectorXd& sv = svd.singularValues();
+    Eigen::Index rank = 0;
+    while (rank < sv.size() && sv(rank) > 1e-14 * sv(0)) ++rank;
+    p = svd.matrixU().leftCols(rank).transpose();
+  }
+  return p;
+}
+
 // The unknowns x: `free` points as (u, v, w), then `pairs` as (u, v, w) giving (u,v) and (v,u) with weight w
 // each, then `diagonal` points as (t, w) giving (t, t).
 struct Problem {
@@ -124,6 +152,10 @@ struct Problem {
   int free = 0, pairs = 0, diagonal = 0;
   double lower = 1e-6;
   const Eigen::VectorXd* b = nullptr;
+  /// Mass and stiffness: U^T (rank × functions), U an orthonormal basis of the span of the function values
+  /// (the functions are linearly dependent); residual and Jacobian are taken in that basis, so that the
+  /// Levenberg–Marquardt normal matrix J J^T is not singular. nullptr: the residual itself.
+  const Eigen::MatrixXd* projection = nullptr;
   int evaluations = 0;
 
   int dimension() const { return 3 * free + 3 * pairs + 2 * diagonal; }
@@ -177,6 +209,10 @@ struct Problem {
         jac->col(k) = x(k + 1) * (fu.col(j) + fv.col(j));
         jac->col(k + 1) = f.col(j);
       }
+    }
+    if (projection != nullptr) {
+      if (jac != nullptr) *jac = (*projection) * (*jac);
+      return (*projection) * (f * r.weights - *b);
     }
     return f * r.weights - *b;
   }
@@ -262,7 +298,10 @@ void run_nlopt(Problem& pb, const std::string& algorithm, int max_evaluations, d
 
 // Bound-constrained Levenberg–Marquardt with damping mu = lambda ||r|| (quadratic convergence also for the
 // underdetermined systems, where J^T J is singular): step -J^T (J J^T + mu I)^{-1} r, or the equal
-// -(J^T J + mu I)^{-1} J^T r when J has more rows than columns; the trial point is clamped to the bounds.
+// -(J^T J + mu I)^{-1} J^T r when J has more rows than columns, over the free variables only; a variable is
+// held fixed while it sits on a bound and the descent direction -J^T r points outward (projected LM: without
+// this a clamped coordinate blocks every step and the iteration stalls), and the trial point is clamped to
+// the bounds.
 void polish(Problem& pb, int iterations, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, Eigen::VectorXd& x) {
   Eigen::MatrixXd jac;
   Eigen::VectorXd r = pb.evaluate(x, &jac);
@@ -270,16 +309,27 @@ void polish(Problem& pb, int iterations, const Eigen::VectorXd& lo, const Eigen:
   double lambda = 1e-3;
   for (int it = 0; it < iterations && norm > 1e-16; ++it) {
     const double mu = lambda * norm;
-    Eigen::VectorXd step;
-    if (jac.rows() <= jac.cols()) {
-      Eigen::MatrixXd a = jac * jac.transpose();
-      a.diagonal().array() += mu;
-      step = -jac.transpose() * a.ldlt().solve(r);
-    } else {
-      Eigen::MatrixXd a = jac.transpose() * jac;
-      a.diagonal().array() += mu;
-      step = -a.ldlt().solve(jac.transpose() * r);
+    const Eigen::VectorXd g = jac.transpose() * r;
+    std::vector<Eigen::Index> free;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      const bool at_lo = x(i) <= lo(i) && g(i) > 0.0, at_hi = x(i) >= hi(i) && g(i) < 0.0;
+      if (!at_lo && !at_hi) free.push_back(i);
     }
+    if (free.empty()) break;
+    Eigen::MatrixXd jf(jac.rows(), static_cast<Eigen::Index>(free.size()));
+    for (std::size_t k = 0; k < free.size(); ++k) jf.col(static_cast<Eigen::Index>(k)) = jac.col(free[k]);
+    Eigen::VectorXd sf;
+    if (jf.rows() <= jf.cols()) {
+      Eigen::MatrixXd a = jf * jf.transpose();
+      a.diagonal().array() += mu;
+      sf = -jf.transpose() * a.ldlt().solve(r);
+    } else {
+      Eigen::MatrixXd a = jf.transpose() * jf;
+      a.diagonal().array() += mu;
+      sf = -a.ldlt().solve(jf.transpose() * r);
+    }
+    Eigen::VectorXd step = Eigen::VectorXd::Zero(x.size());
+    for (std::size_t k = 0; k < free.size(); ++k) step(free[k]) = sf(static_cast<Eigen::Index>(k));
     const Eigen::VectorXd trial = (x + step).cwiseMax(lo).cwiseMin(hi);
     if (!trial.allFinite()) {
       lambda *= 10.0;
@@ -355,6 +405,133 @@ FitResult fit_rule(int valence, int points, const FitOptions& options) {
     }
     if (a.converged && options.stop_at_first) break;
   }
+  return result;
+}
+
+}  // namespace iga::quadrature::moment_fit
+
+namespace iga::quadrature::moment_fit {
+
+namespace {
+Eigen::VectorXd pack(const Rule& rule) {
+  Eigen::VectorXd x(3 * rule.size());
+  for (Eigen::Index i = 0; i < rule.size(); ++i) x.segment<3>(3 * i) << rule.points(0, i), rule.points(1, i), rule.weights(i);
+  return x;
+}
+}  // namespace
+
+FitResult eliminate_points(int valence, const Rule& start, const FitOptions& options, int min_points) {
+  if (valence < 3 || valence > 16) throw InputError("moment fit: valence must be 3..16, got " + std::to_string(valence));
+  if (start.size() < 1) throw InputError("moment fit: elimination needs a start rule");
+  Problem pb;
+  pb.valence = valence;
+  pb.space = options.space;
+  pb.lower = options.lower_bound;
+  pb.b = &moments(valence, options.space);
+  if (options.space != Space::Phi) pb.projection = &range_projection(valence, options.space);
+  FitResult result;
+  result.valence = valence;
+  result.space = options.space;
+  auto converged = [&](const Rule& r, Attempt& a) {
+    a.residual = residual(valence, options.space, r);
+    a.min_weight = r.weights.minCoeff();
+    a.converged = a.residual <= options.tolerance && a.min_weight >= options.min_weight;
+    return a.converged;
+  };
+  // Polish the start (points clamped into the bounds first).
+  Rule current = start;
+  current.points = current.points.cwiseMax(options.lower_bound).cwiseMin(1.0);
+  {
+    pb.free = static_cast<int>(current.size());
+    Eigen::VectorXd lo, hi, x = pack(current);
+    pb.bounds(lo, hi);
+    polish(pb, options.polish_iterations, lo, hi, x);
+    current = pb.expand(x);
+    Attempt a;
+    result.converged = converged(current, a);
+    result.residual = a.residual;
+    result.attempts.push_back(a);
+    if (!result.converged) {
+      result.rule = current;
+      result.points = static_cast<int>(current.size());
+      return result;
+    }
+  }
+  const Eigen::Index rows = pb.projection != nullptr ? pb.projection->rows() : pb.b->size();
+  while (current.size() > min_points) {
+    Eigen::MatrixXd f;
+    evaluate_functions(valence, options.space, current.points, f);
+    std::vector<std::pair<double, Eigen::Index>> significance;
+    for (Eigen::Index i = 0; i < current.size(); ++i) significance.emplace_back(current.weights(i) * f.col(i).norm(), i);
+    std::sort(significance.begin(), significance.end());
+    // Many points left: remove a batch (5 % of them) per step; near the end one at a time.
+    const Eigen::Index batch = current.size() > 2 * rows ? std::max<Eigen::Index>(1, current.size() / 20) : 1;
+    bool accepted = false;
+    for (int k = 0; k < options.attempts && !accepted; ++k) {
+      std::vector<bool> drop(static_cast<std::size_t>(current.size()), false);
+      for (Eigen::Index j = 0; j < batch; ++j) {
+        const auto pick = static_cast<std::size_t>(batch == 1 ? k : j);
+        if (pick >= significance.size()) break;
+        drop[static_cast<std::size_t>(significance[pick].second)] = true;
+      }
+      Rule trial;
+      const auto kept = static_cast<Eigen::Index>(std::count(drop.begin(), drop.end(), false));
+      trial.points.resize(2, kept);
+      trial.weights.resize(kept);
+      for (Eigen::Index i = 0, j = 0; i < current.size(); ++i) {
+        if (drop[static_cast<std::size_t>(i)]) continue;
+        trial.points.col(j) = current.points.col(i);
+        trial.weights(j++) = current.weights(i);
+      }
+      pb.free = static_cast<int>(kept);
+      Eigen::VectorXd lo, hi, x = pack(trial);
+      pb.bounds(lo, hi);
+      pb.evaluations = 0;
+      polish(pb, options.polish_iterations, lo, hi, x);
+      trial = pb.expand(x);
+      Attempt a;
+      a.evaluations = pb.evaluations;
+      if (converged(trial, a)) {
+        current = std::move(trial);
+        result.residual = a.residual;
+        accepted = true;
+      }
+      result.attempts.push_back(a);
+      if (batch > 1) break;  // a failed batch: retry the step one point at a time
+    }
+    if (!accepted && batch == 1) break;
+    if (!accepted) {
+      // Batch failed: fall back to single removals by pretending the batch threshold is passed.
+      bool single = false;
+      for (int k = 0; k < options.attempts && !single; ++k) {
+        Rule trial;
+        trial.points.resize(2, current.size() - 1);
+        trial.weights.resize(current.size() - 1);
+        for (Eigen::Index i = 0, j = 0; i < current.size(); ++i) {
+          if (i == significance[static_cast<std::size_t>(k)].second) continue;
+          trial.points.col(j) = current.points.col(i);
+          trial.weights(j++) = current.weights(i);
+        }
+        pb.free = static_cast<int>(trial.size());
+        Eigen::VectorXd lo, hi, x = pack(trial);
+        pb.bounds(lo, hi);
+        polish(pb, options.polish_iterations, lo, hi, x);
+        trial = pb.expand(x);
+        Attempt a;
+        if (converged(trial, a)) {
+          current = std::move(trial);
+          result.residual = a.residual;
+          single = true;
+        }
+        result.attempts.push_back(a);
+      }
+      if (!single) break;
+    }
+  }
+  result.rule = current;
+  result.points = static_cast<int>(current.size());
+  result.best_attempt = 0;
+  result.seed = 0;
   return result;
 }
 

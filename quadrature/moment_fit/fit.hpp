@@ -83,4 +83,14 @@ struct FitResult {
 /// fit (converged = false); InputError for bad arguments.
 FitResult fit_rule(int valence, int points, const FitOptions& options);
 
+/// Node elimination (an alternative to random starts, which rarely converge for the mass and stiffness spaces):
+/// starts from `start` (a rule integrating the space to options.tolerance, e.g. tiled_rule(4, 16)) and
+/// repeatedly removes the point of least significance w_i ||Φ_i|| (several at once while many points are left),
+/// re-solving points and weights of the rest with the projected Levenberg–Marquardt iteration
+/// (options.polish_iterations per step). When a removal does not re-converge, the next candidates are tried
+/// (options.attempts of them); then it stops. Returns the smallest converged rule (converged = false only when
+/// `start` itself does not converge); attempts lists one entry per accepted or rejected removal. Stops at
+/// min_points. Deterministic (no random numbers; seed and best_attempt are 0).
+FitResult eliminate_points(int valence, const Rule& start, const FitOptions& options, int min_points = 1);
+
 }  // namespace iga::quadrature::moment_fit

@@ -23,6 +23,7 @@ void write_table(const std::string& path, const Table& t) {
       << "# (moment fitting, thesis 4.2.4): sum_i w_i f(u_i, v_i) = integral of f over [0,1]^2 for every f of the\n"
       << "# space (phi: the 2n+8 subdivision splines; mass: their pairwise products; stiffness: grad phi_a . grad\n"
       << "# phi_b). Written by iga-fit-quadrature; format in quadrature/moment_fit/table.hpp. Data lines: u v w.\n";
+  if (!t.note.empty()) out << "# " << t.note << "\n";
   out << "valence " << t.valence << "\n"
       << "space " << to_string(t.space) << "\n"
       << "points " << t.rule.size() << "\n";
@@ -134,15 +135,17 @@ Table load_table(const std::string& path) {
 
 Rule load_rule(const std::string& path) { return load_table(path).rule; }
 
-Fitted::Fitted(const std::string& directory) : directory_(directory), gauss_(4), rules_(17) {
+Fitted::Fitted(const std::string& directory, Space space)
+    : directory_(directory), space_(space), gauss_(4), tiled_(tiled_rule(4, 12)), rules_(17) {
   if (!std::filesystem::is_directory(directory)) throw InputError(directory, 0, "fitted quadrature: not a directory");
   for (int n = 3; n <= 16; ++n) {
     for (const bool symmetric : {false, true}) {
-      const auto path = std::filesystem::path(directory) / table_file_name(n, Space::Phi, symmetric);
+      const auto path = std::filesystem::path(directory) / table_file_name(n, space_, symmetric);
       if (!std::filesystem::exists(path)) continue;
       Table t = load_table(path.string());
-      if (t.valence != n || t.space != Space::Phi || t.symmetric != symmetric) {
-        throw InputError(path.string(), 0, "table does not hold the phi rule of valence " + std::to_string(n));
+      if (t.valence != n || t.space != space_ || t.symmetric != symmetric) {
+        throw InputError(path.string(), 0,
+                         "table does not hold the " + to_string(space_) + " rule of valence " + std::to_string(n));
       }
       auto& slot = rules_[static_cast<std::size_t>(n)];
       if (slot.size() == 0 || t.rule.size() < slot.size()) slot = std::move(t.rule);
@@ -152,9 +155,11 @@ Fitted::Fitted(const std::string& directory) : directory_(directory), gauss_(4),
 
 const Rule& Fitted::rule(const basis::ElementKind& kind) const {
   if (kind.shape == basis::Shape::Quad && kind.family == basis::Family::Irregular) {
+    if (kind.boundary) return tiled_;
     const int n = kind.valence;
     if (n < 0 || n > 16 || rules_[static_cast<std::size_t>(n)].size() == 0) {
-      throw UnsupportedError("fitted quadrature: no table for valence " + std::to_string(n) + " in '" + directory_ + "'");
+      throw UnsupportedError("fitted quadrature: no " + to_string(space_) + " table for valence " + std::to_string(n) +
+                             " in '" + directory_ + "' (expected " + table_file_name(n, space_) + ")");
     }
     return rules_[static_cast<std::size_t>(n)];
   }
@@ -169,6 +174,8 @@ std::vector<int> Fitted::valences() const {
   return out;
 }
 
-std::unique_ptr<RuleProvider> make_fitted(const std::string& directory) { return std::make_unique<Fitted>(directory); }
+std::unique_ptr<RuleProvider> make_fitted(const std::string& directory, Space space) {
+  return std::make_unique<Fitted>(directory, space);
+}
 
 }  // namespace iga::quadrature::moment_fit

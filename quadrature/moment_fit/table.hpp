@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "quadrature/moment_fit/fit.hpp"
+#include "quadrature/per_tile.hpp"
 #include "quadrature/rule_provider.hpp"
 
 namespace iga::quadrature::moment_fit {
@@ -29,6 +30,7 @@ struct Table {
   int attempt = 0;
   bool symmetric = false;
   Rule rule;
+  std::string note;  ///< written as a comment line (how the rule was made); not read back
 };
 
 /// "cc_<space>_n<N>.txt", plus "_sym" before ".txt" for symmetric tables.
@@ -42,27 +44,33 @@ Table load_table(const std::string& path);
 /// The rule of load_table(path).
 Rule load_rule(const std::string& path);
 
-/// The fitted rules of the "phi" tables of a directory on Irregular quads (by valence), 4×4 Gauss on every
-/// other element (collapsed on triangles), 4 Gauss points on sides. The tables are read on construction
-/// (all cc_phi_n<N>.txt and cc_phi_n<N>_sym.txt, N = 3..16, present in the directory; of two tables for one
-/// valence the one with fewer points is used); immutable afterwards, hence thread-safe.
-/// rule() throws UnsupportedError naming the valence when no table for it was found.
+/// The fitted rules of the tables of one space (phi, mass or stiffness) in a directory on Irregular quads (by
+/// valence), 4×4 Gauss on every other element (collapsed on triangles), 4 Gauss points on sides. The tables
+/// are read on construction (all cc_<space>_n<N>.txt and cc_<space>_n<N>_sym.txt, N = 3..16, present in the
+/// directory; of two tables for one valence the one with fewer points is used); immutable afterwards, hence
+/// thread-safe. rule() throws UnsupportedError naming the valence and the space when no table for it was
+/// found. Name "fitted" (phi) or "fitted:<space>". Elements at a boundary extraordinary vertex
+/// (ElementKind::boundary) are not the interior element the tables were fitted for: they get the per-tile
+/// rule tiled_rule(4, 12) instead.
 class Fitted final : public RuleProvider {
  public:
   /// InputError when the directory does not exist or a table in it is malformed.
-  explicit Fitted(const std::string& directory);
+  explicit Fitted(const std::string& directory, Space space = Space::Phi);
   const Rule& rule(const basis::ElementKind& kind) const override;
   const Rule1D& edge_rule() const override { return gauss_.edge_rule(); }
-  std::string name() const override { return "fitted"; }
+  std::string name() const override { return space_ == Space::Phi ? "fitted" : "fitted:" + to_string(space_); }
+  Space space() const { return space_; }
   /// The valences with a table.
   std::vector<int> valences() const;
 
  private:
   std::string directory_;
+  Space space_;
   Gauss gauss_;
+  Rule tiled_;  // boundary extraordinary vertices
   std::vector<Rule> rules_;  // by valence; empty rule: none
 };
 
-std::unique_ptr<RuleProvider> make_fitted(const std::string& directory);
+std::unique_ptr<RuleProvider> make_fitted(const std::string& directory, Space space = Space::Phi);
 
 }  // namespace iga::quadrature::moment_fit

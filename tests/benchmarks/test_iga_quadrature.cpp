@@ -76,9 +76,58 @@ TEST(IgaQuadrature, VolumeOfTheCubeNet) {
   EXPECT_NEAR(t.report["value"].get<double>(), exact, 1e-12 * exact);
 }
 
+// Mass and parametric stiffness matrices of the irregular element (--valence N) against the exact matrices
+// (geometric series, quadrature/exact/irregular_integrals.hpp): every stored fitted mass/stiffness table
+// reproduces them to 1e-12 relative (Frobenius) with its few points; a low-order rule does not; a fine
+// per-tile rule converges to them (an independent check of the exact matrices and of the comparison).
+TEST(IgaQuadrature, FittedMassAndStiffnessRulesReproduceTheExactMatrices) {
+  int tables = 0;
+  for (const std::string space : {"mass", "stiffness"}) {
+    for (int n = 3; n <= 16; ++n) {
+      const fs::path table = fs::path(IGA_SOURCE_DIR) / "data" / "quadrature" / ("cc_" + space + "_n" + std::to_string(n) + ".txt");
+      if (!fs::exists(table)) continue;
+      ++tables;
+      const std::string element = "--quantity " + space + " --valence " + std::to_string(n);
+      const Outcome f = run(element + " --method fitted:" + space);
+      ASSERT_EQ(f.code, 0) << f.err;
+      EXPECT_LE(f.report["relative_frobenius_error"].get<double>(), 1e-12) << space << " n=" << n;
+      EXPECT_GT(f.report["points_per_irregular_element"].get<int>(), 0);
+      EXPECT_EQ(f.report["irregular_elements"].get<int>(), 1);
+      // 2 × 2 Gauss per tile on one level: integrands of degree 6 per direction are not integrated exactly.
+      const Outcome low = run(element + " --method tiles:2:1");
+      ASSERT_EQ(low.code, 0) << low.err;
+      EXPECT_GT(low.report["relative_frobenius_error"].get<double>(), 1e-5) << space << " n=" << n;
+    }
+  }
+  EXPECT_GE(tables, 2);  // at least the mass and stiffness rules of valence 4
+  for (const std::string space : {"mass", "stiffness"}) {
+    const Outcome fine = run("--quantity " + space + " --valence 5 --method tiles:4:24");
+    ASSERT_EQ(fine.code, 0) << fine.err;
+    EXPECT_LE(fine.report["relative_frobenius_error"].get<double>(), 1e-13) << space;
+    EXPECT_EQ(run("--quantity " + space + " --valence 5 --method exact").report["max_abs_error"].get<double>(), 0.0);
+  }
+}
+
+// --mesh: the ring sums over the elements at interior EVs. The folded macro rule (exact over a closed ring
+// on the tiles it covers) gives the per-tile rule's error at the same levels with fewer points.
+TEST(IgaQuadrature, MacroRuleOnRingSumsOfTheStiffnessMatrix) {
+  const Outcome t = run(net("square_evs.obj") + " --quantity stiffness --method tiles:4:8");
+  const Outcome m = run(net("square_evs.obj") + " --quantity stiffness --method macro:2:8");
+  ASSERT_EQ(t.code, 0) << t.err;
+  ASSERT_EQ(m.code, 0) << m.err;
+  EXPECT_GT(t.report["irregular_elements"].get<int>(), 3);
+  const double et = t.report["relative_frobenius_error"].get<double>();
+  EXPECT_LT(et, 1e-6);
+  EXPECT_NEAR(m.report["relative_frobenius_error"].get<double>(), et, 1e-3 * et);
+  EXPECT_LT(m.report["points_around_evs"].get<int>(), t.report["points_around_evs"].get<int>());
+}
+
 TEST(IgaQuadrature, BadInputGivesOneLine) {
   for (const std::string& args : {net("cube.obj") + " --quantity area", net("square_evs.obj") + " --quantity volume",
-                                  net("square_evs.obj") + " --method simpson:3"}) {
+                                  net("square_evs.obj") + " --method simpson:3", std::string("--quantity mass"),
+                                  std::string("--quantity area --valence 5"), std::string("--quantity mass --valence 2"),
+                                  net("square_evs.obj") + " --quantity mass --valence 5",
+                                  std::string("--quantity stiffness --valence 5 --method fitted:mass:/nonexistent/iga")}) {
     const Outcome o = run(args);
     EXPECT_NE(o.code, 0) << args;
     EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;

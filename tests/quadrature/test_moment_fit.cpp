@@ -2,6 +2,7 @@
 // fit from a fixed seed, the table format and its errors, the Fitted provider.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -10,6 +11,7 @@
 #include "quadrature/moment_fit/fit.hpp"
 #include "quadrature/moment_fit/table.hpp"
 #include "quadrature/per_tile.hpp"
+#include "quadrature/rule_provider.hpp"
 
 using namespace iga::quadrature;
 using namespace iga::quadrature::moment_fit;
@@ -37,7 +39,15 @@ void verify(const Table& t, const std::string& label) {
   EXPECT_GE(t.rule.points.minCoeff(), 0.0);
   EXPECT_LE(t.rule.points.maxCoeff(), 1.0);
   EXPECT_GT(t.rule.points.colwise().maxCoeff().minCoeff(), 0.0);  // never the extraordinary vertex
-  EXPECT_NEAR(t.rule.weights.sum(), 1.0, 1e-13);                  // the splines are a partition of unity
+  // The splines are a partition of unity, so 1 is in the phi space and (as (Σφ)²) in the mass space; the
+  // stiffness space (gradients) does not contain the constants, so its weights need not sum to the area.
+  // For mass, Σ w = Σ_{a,b} (Φw)_{ab} is a sum of the M = num_functions residual entries with factors 1 or 2,
+  // so |Σ w − 1| <= 2 √M ||Φw − b|| <= 2 √M 1e-13 (the bound the residual check above implies).
+  if (t.space == Space::Phi) {
+    EXPECT_NEAR(t.rule.weights.sum(), 1.0, 1e-13);
+  } else if (t.space == Space::Mass) {
+    EXPECT_NEAR(t.rule.weights.sum(), 1.0, 2.0 * std::sqrt(num_functions(t.valence, t.space)) * 1e-13);
+  }
   if (t.symmetric) {  // (u, v) and (v, u) both present with equal weights
     for (Eigen::Index i = 0; i < t.rule.size(); ++i) {
       bool mirrored = false;
@@ -64,6 +74,32 @@ TEST(MomentFit, EveryStoredTableIsExact) {
     ++count;
   }
   EXPECT_GE(count, 4);  // at least the phi rules of n = 3..6
+}
+
+// The check above covers every space: the stored mass and stiffness tables are among the files it reads.
+// Their moments are exact (geometric series); cross-check them against a fine per-tile rule (exact on the
+// tiles of levels 1..40, the corner square left is 4^-40 of the element), so a wrong moment cannot make a
+// table look exact.
+TEST(MomentFit, MassAndStiffnessMomentsMatchTheTiledRule) {
+  const Rule fine = tiled_rule(4, 40);
+  for (int n : {3, 4, 5, 8}) {
+    for (const Space space : {Space::Mass, Space::Stiffness}) {
+      SCOPED_TRACE(to_string(space) + " n=" + std::to_string(n));
+      const Eigen::VectorXd& b = moments(n, space);
+      ASSERT_EQ(b.size(), num_functions(n, space));
+      Eigen::MatrixXd f;
+      evaluate_functions(n, space, fine.points, f);
+      EXPECT_LE((f * fine.weights - b).norm(), 1e-13 * b.norm());
+    }
+    // Σ_a,b φ_a φ_b = 1 (partition of unity): the off-diagonal products count twice.
+    const Eigen::VectorXd& m = moments(n, Space::Mass);
+    double total = 0;
+    Eigen::Index k = 0;
+    for (int a = 0; a < 2 * n + 8; ++a) {
+      for (int c = a; c < 2 * n + 8; ++c, ++k) total += (a == c ? 1.0 : 2.0) * m(k);
+    }
+    EXPECT_NEAR(total, 1.0, 1e-14);
+  }
 }
 
 TEST(MomentFit, ExactMomentsArePartitionOfUnityAndMatchTheTiledRule) {
@@ -110,6 +146,27 @@ TEST(MomentFit, SymmetricFitValence3) {
   t.symmetric = true;
   t.rule = r.rule;
   verify(t, "symmetric n=3 q=8");
+}
+
+// Node elimination: from the per-tile rule (exact for n = 4, where the functions are polynomials of degree
+// <= 6 per direction and every tile has a 4 × 4 Gauss rule) down to a smaller rule that still integrates the
+// stiffness space to 1e-13, with positive weights and points inside the element.
+TEST(MomentFit, EliminationShrinksAnExactRule) {
+  FitOptions o;
+  o.space = Space::Stiffness;
+  o.attempts = 2;
+  o.polish_iterations = 1000;  // the LM polish converges slowly; with 100-300 iterations no point can be removed
+  const Rule start = tiled_rule(4, 1);  // 64 points
+  const FitResult r = eliminate_points(4, start, o, 40);
+  ASSERT_TRUE(r.converged);
+  EXPECT_EQ(r.points, r.rule.size());
+  EXPECT_LE(r.rule.size(), 40);  // min_points reached: every removal down to 40 re-converged
+  Table t;
+  t.valence = 4;
+  t.space = Space::Stiffness;
+  t.rule = r.rule;
+  verify(t, "elimination n=4 stiffness");
+  EXPECT_THROW(eliminate_points(2, start, o), iga::InputError);
 }
 
 TEST(MomentFit, RejectsBadArguments) {
@@ -186,6 +243,14 @@ TEST(MomentFitProvider, UsesTablesOnIrregularQuadsAndGaussElsewhere) {
   EXPECT_EQ(provider->edge_rule().size(), 4);
   kind.valence = 7;  // only a symmetric table exists for n = 7
   EXPECT_EQ(provider->rule(kind).size(), load_rule((kTables / table_file_name(7, Space::Phi, true)).string()).size());
+  // An element at a boundary extraordinary vertex is not the element of the tables: the per-tile rule.
+  kind.valence = 4;
+  kind.boundary = true;
+  const Rule& rb = provider->rule(kind);
+  const Rule tiles = tiled_rule(4, 12);
+  ASSERT_EQ(rb.size(), tiles.size());
+  EXPECT_EQ((rb.points - tiles.points).cwiseAbs().maxCoeff(), 0.0);
+  kind.boundary = false;
   kind.valence = 17;
   EXPECT_THROW(provider->rule(kind), iga::UnsupportedError);
   // An empty directory: every irregular valence is unsupported, the message names it.
@@ -200,4 +265,72 @@ TEST(MomentFitProvider, UsesTablesOnIrregularQuadsAndGaussElsewhere) {
     EXPECT_NE(std::string(e.what()).find("valence 5"), std::string::npos) << e.what();
   }
   EXPECT_THROW(Fitted("/nonexistent/iga"), iga::InputError);
+}
+
+// The spec "fitted[:SPACE][:DIR]": phi by default (fitted, fitted:DIR as before), fitted:mass, fitted:stiffness,
+// fitted:SPACE:DIR; a valence without a table of the space is an UnsupportedError naming valence and space.
+TEST(MomentFitProvider, SpecSelectsTheSpaceAndNamesMissingTables) {
+  // A directory holding one mass table (valence 5) and one stiffness table (valence 3); their contents are
+  // a per-tile rule, which is enough to see which table the provider picked.
+  const auto dir = scratch("spec_dir");
+  std::filesystem::create_directories(dir);
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) std::filesystem::remove(entry.path());
+  Table mass;
+  mass.valence = 5;
+  mass.space = Space::Mass;
+  mass.rule = tiled_rule(2, 3);  // 40 points
+  write_table((dir / table_file_name(5, Space::Mass)).string(), mass);
+  Table stiff;
+  stiff.valence = 3;
+  stiff.space = Space::Stiffness;
+  stiff.rule = tiled_rule(3, 1);  // 36 points
+  write_table((dir / table_file_name(3, Space::Stiffness)).string(), stiff);
+
+  iga::basis::ElementKind kind;
+  kind.family = iga::basis::Family::Irregular;
+  kind.valence = 5;
+  const auto m = make_rule_provider("fitted:mass:" + dir.string(), 4);
+  EXPECT_EQ(m->name(), "fitted:mass");
+  EXPECT_EQ(m->rule(kind).size(), 40);
+  EXPECT_EQ(m->rule(iga::basis::ElementKind{}).size(), 16);  // 4 × 4 Gauss on regular quads
+  kind.valence = 3;
+  try {
+    m->rule(kind);
+    ADD_FAILURE() << "no error for a missing mass table";
+  } catch (const iga::UnsupportedError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("valence 3"), std::string::npos) << what;
+    EXPECT_NE(what.find("mass"), std::string::npos) << what;
+  }
+  const auto k = make_rule_provider("fitted:stiffness:" + dir.string(), 4);
+  EXPECT_EQ(k->name(), "fitted:stiffness");
+  EXPECT_EQ(k->rule(kind).size(), 36);
+  kind.valence = 5;
+  try {
+    k->rule(kind);
+    ADD_FAILURE() << "no error for a missing stiffness table";
+  } catch (const iga::UnsupportedError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("valence 5"), std::string::npos) << what;
+    EXPECT_NE(what.find("stiffness"), std::string::npos) << what;
+  }
+  // fitted:DIR and fitted:phi:DIR: the phi tables (none in this directory).
+  for (const std::string& spec : {"fitted:" + dir.string(), "fitted:phi:" + dir.string()}) {
+    const auto p = make_rule_provider(spec, 4);
+    EXPECT_EQ(p->name(), "fitted") << spec;
+    EXPECT_THROW(p->rule(kind), iga::UnsupportedError) << spec;
+  }
+  // The default directory (the source tree's tables): fitted is phi, as before.
+  const auto def = make_rule_provider("fitted", 4);
+  EXPECT_EQ(def->name(), "fitted");
+  kind.valence = 3;
+  EXPECT_EQ(def->rule(kind).size(), 5);  // cc_phi_n3.txt
+  EXPECT_EQ(make_rule_provider("fitted:phi", 4)->rule(kind).size(), 5);
+  // Bad specifications: InputError naming the specification.
+  for (const std::string& spec : {std::string("fitted:"), std::string("fitted:mass:"), "fitted:mass:" + dir.string() + "/nope"}) {
+    EXPECT_THROW(make_rule_provider(spec, 4), iga::InputError) << spec;
+  }
+  // A table of the wrong space under a mass name is rejected when the provider reads it.
+  write_table((dir / table_file_name(3, Space::Mass)).string(), stiff);
+  EXPECT_THROW(make_rule_provider("fitted:mass:" + dir.string(), 4), iga::InputError);
 }
