@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <gtest/gtest.h>
 
 #include "basis/polyhedral/mask.hpp"
 
@@ -92,6 +93,73 @@ inline MatrixXd read_table(const std::filesystem::path& file) {
     for (std::size_t j = 0; j < rows[i].size(); ++j)
       m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
   return m;
+}
+
+/// The reference table eopSct<n> in our layout (mask.hpp), rows renormalised to sum 1 (README: the
+/// watermark leaves row sums off by up to 4e-9). Facts about the reference layout (public repository
+/// paramgupta107/polyhedral_splines, ExtraordinaryPatchConstructor / PatchBuilder, and the tables):
+///  - columns: for each outgoing half-edge of v in turn, its end e_k then f_k; v last → our column j + 1,
+///    and v → our column 0;
+///  - rows: patch-major, 16 per patch, row i·4 + j with i the first (slow) index;
+///  - n = 3, 5: reference patch p is our sector (n − p) mod n, i along our u, j along our v;
+///  - n ≥ 6: reference patch 4s + a + 2b is sector (s − 1) mod n, sub-patch (α, β) = (1 − a, 1 − b),
+///    with i, j running against our u, v (row i·4 + j → our row (3 − j)·4 + (3 − i)).
+/// (MappedReferenceMeetsTheBi2Ring confirms the mapping geometrically.)
+inline std::vector<MatrixXd> star_reference_in_our_layout(int n) {
+  const MatrixXd ref = read_table(reference_tables() / ("eopSct" + std::to_string(n) + ".csv"));
+  const int patches = n >= 6 ? 4 * n : n, gathered = 2 * n + 1;
+  EXPECT_EQ(ref.rows(), 16 * patches);
+  EXPECT_EQ(ref.cols(), gathered);
+  std::vector<MatrixXd> out(static_cast<std::size_t>(patches), MatrixXd::Zero(16, gathered));
+  for (int rp = 0; rp < patches; ++rp)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        int patch = 0, row = 0;
+        if (n < 6) {
+          patch = (n - rp) % n;
+          row = j * 4 + i;
+        } else {
+          const int s = rp / 4, a = rp % 2, b = (rp % 4) / 2;
+          patch = 4 * ((s + n - 1) % n) + 2 * (1 - b) + (1 - a);
+          row = (3 - j) * 4 + (3 - i);
+        }
+        const Eigen::RowVectorXd r = ref.row(16 * rp + 4 * i + j);
+        MatrixXd& target = out[static_cast<std::size_t>(patch)];
+        for (int c = 0; c < gathered; ++c) target(row, c == 2 * n ? 0 : c + 1) = r(c) / r.sum();
+      }
+  return out;
+}
+
+/// The reference table ngonSct<n> in our layout (ngon_cap.hpp), rows renormalised to sum 1 (README: the
+/// watermark leaves row sums off by up to 4e-9). Facts about the reference layout (public repository
+/// paramgupta107/polyhedral_splines, NGonPatchConstructor / PatchBuilder, and the tables):
+///  - columns: for each half-edge c_w → c_{w+1} of F in turn, [d_w, p_w, r_w, c_w] → our n + 3w + 1,
+///    n + 3w + 2, n + 3w, w;
+///  - rows: patch-major, 16 per patch, row i·4 + j; i runs from B_w's centroid toward A_w's, j toward
+///    A_{w−1}'s, i.e. against our v and u: → our row (3 − j)·4 + (3 − i);
+///  - n = 3, 5: reference patch w is our patch w;
+///  - n ≥ 6: reference patch 4w + a + 2b is our sub-patch 4w + 2(1 − b) + (1 − a).
+/// (MappedReferenceMeetsTheBi2Ring confirms the mapping geometrically.)
+inline std::vector<MatrixXd> ngon_reference_in_our_layout(int n) {
+  const MatrixXd ref = read_table(reference_tables() / ("ngonSct" + std::to_string(n) + ".csv"));
+  const int patches = n >= 6 ? 4 * n : n, gathered = 4 * n;
+  EXPECT_EQ(ref.rows(), 16 * patches);
+  EXPECT_EQ(ref.cols(), gathered);
+  auto column = [n](int c) {
+    const int w = c / 4, r = c % 4;
+    return r == 3 ? w : r == 2 ? n + 3 * w : r == 0 ? n + 3 * w + 1 : n + 3 * w + 2;
+  };
+  std::vector<MatrixXd> out(static_cast<std::size_t>(patches), MatrixXd::Zero(16, gathered));
+  for (int rp = 0; rp < patches; ++rp)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const int patch = n < 6 ? rp : 4 * (rp / 4) + 2 * (1 - (rp % 4) / 2) + (1 - rp % 2);
+        const int row = (3 - j) * 4 + (3 - i);
+        const Eigen::RowVectorXd r = ref.row(16 * rp + 4 * i + j);
+        MatrixXd& target = out[static_cast<std::size_t>(patch)];
+        for (int c = 0; c < gathered; ++c) target(row, column(c)) = r(c) / r.sum();
+      }
+  return out;
 }
 
 }  // namespace polyhedral_cap_support

@@ -12,3 +12,4 @@ target_compile_definitions(test_iga_geometry PRIVATE IGA_GEOMETRY_EXE="$<TARGET_
 add_dependencies(test_iga_geometry iga-geometry)
 iga_add_test(test_polyhedral_space basis/test_polyhedral_space.cpp)
 iga_add_test(test_polyhedral_poisson fem/test_polyhedral_poisson.cpp)
+iga_add_test(test_polyhedral_reference_nets basis/test_polyhedral_reference_nets.cpp)

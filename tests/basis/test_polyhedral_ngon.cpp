@@ -260,37 +260,6 @@ TEST(PolyhedralNGon, PartitionOfUnityAndLinearPrecision) {
 
 
 
-/// The reference table ngonSct<n> in our layout (ngon_cap.hpp), rows renormalised to sum 1 (README: the
-/// watermark leaves row sums off by up to 4e-9). Facts about the reference layout (public repository
-/// paramgupta107/polyhedral_splines, NGonPatchConstructor / PatchBuilder, and the tables):
-///  - columns: for each half-edge c_w → c_{w+1} of F in turn, [d_w, p_w, r_w, c_w] → our n + 3w + 1,
-///    n + 3w + 2, n + 3w, w;
-///  - rows: patch-major, 16 per patch, row i·4 + j; i runs from B_w's centroid toward A_w's, j toward
-///    A_{w−1}'s, i.e. against our v and u: → our row (3 − j)·4 + (3 − i);
-///  - n = 3, 5: reference patch w is our patch w;
-///  - n ≥ 6: reference patch 4w + a + 2b is our sub-patch 4w + 2(1 − b) + (1 − a).
-/// (MappedReferenceMeetsTheBi2Ring confirms the mapping geometrically.)
-std::vector<MatrixXd> reference_in_our_layout(int n) {
-  const MatrixXd ref = read_table(reference_tables() / ("ngonSct" + std::to_string(n) + ".csv"));
-  const int patches = n >= 6 ? 4 * n : n, gathered = 4 * n;
-  EXPECT_EQ(ref.rows(), 16 * patches);
-  EXPECT_EQ(ref.cols(), gathered);
-  auto column = [n](int c) {
-    const int w = c / 4, r = c % 4;
-    return r == 3 ? w : r == 2 ? n + 3 * w : r == 0 ? n + 3 * w + 1 : n + 3 * w + 2;
-  };
-  std::vector<MatrixXd> out(static_cast<std::size_t>(patches), MatrixXd::Zero(16, gathered));
-  for (int rp = 0; rp < patches; ++rp)
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        const int patch = n < 6 ? rp : 4 * (rp / 4) + 2 * (1 - (rp % 4) / 2) + (1 - rp % 2);
-        const int row = (3 - j) * 4 + (3 - i);
-        const Eigen::RowVectorXd r = ref.row(16 * rp + 4 * i + j);
-        MatrixXd& target = out[static_cast<std::size_t>(patch)];
-        for (int c = 0; c < gathered; ++c) target(row, column(c)) = r(c) / r.sum();
-      }
-  return out;
-}
 
 bool have_reference() { return std::filesystem::exists(reference_tables() / "ngonSct3.csv"); }
 
@@ -299,7 +268,7 @@ TEST(PolyhedralNGon, MappedReferenceMeetsTheBi2Ring) {
   for (int n : kValences) {
     ConfigurationMask ref;
     ref.gathered = 4 * n;
-    for (const auto& c : reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
+    for (const auto& c : ngon_reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
     const Net net = random_net(n, 31 * n);
     const Residuals r = residuals(apply(ref, net.points), net, n, reparam(n));
     // the tables' ~1e-10 watermark perturbations bound how well the reference satisfies C0 / (4)
@@ -315,7 +284,7 @@ TEST(PolyhedralNGon, ReferenceSatisfiesRecoveredReparameterisation) {
   for (int n : kValences) {
     ConfigurationMask ref;
     ref.gathered = 4 * n;
-    for (const auto& c : reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
+    for (const auto& c : ngon_reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
     for (unsigned seed = 1; seed <= 3; ++seed) {
       const Net net = random_net(n, 17 * n + seed);
       const Residuals r = residuals(apply(ref, net.points), net, n, reparam(n));
@@ -331,7 +300,7 @@ TEST(PolyhedralNGon, CloseToTheReferenceSurfaces) {
     const ConfigurationMask ours = iga::basis::polyhedral::ngon_mask(n);
     ConfigurationMask ref;
     ref.gathered = 4 * n;
-    for (const auto& c : reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
+    for (const auto& c : ngon_reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
     double worst = 0.0;
     for (unsigned seed = 1; seed <= 10; ++seed) {
       const Net net = random_net(n, 1000 * n + seed);

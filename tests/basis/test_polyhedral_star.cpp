@@ -238,40 +238,6 @@ TEST(PolyhedralStar, PartitionOfUnityAndLinearPrecision) {
 
 
 
-/// The reference table eopSct<n> in our layout (mask.hpp), rows renormalised to sum 1 (README: the
-/// watermark leaves row sums off by up to 4e-9). Facts about the reference layout (public repository
-/// paramgupta107/polyhedral_splines, ExtraordinaryPatchConstructor / PatchBuilder, and the tables):
-///  - columns: for each outgoing half-edge of v in turn, its end e_k then f_k; v last → our column j + 1,
-///    and v → our column 0;
-///  - rows: patch-major, 16 per patch, row i·4 + j with i the first (slow) index;
-///  - n = 3, 5: reference patch p is our sector (n − p) mod n, i along our u, j along our v;
-///  - n ≥ 6: reference patch 4s + a + 2b is sector (s − 1) mod n, sub-patch (α, β) = (1 − a, 1 − b),
-///    with i, j running against our u, v (row i·4 + j → our row (3 − j)·4 + (3 − i)).
-/// (MappedReferenceMeetsTheBi2Ring confirms the mapping geometrically.)
-std::vector<MatrixXd> reference_in_our_layout(int n) {
-  const MatrixXd ref = read_table(reference_tables() / ("eopSct" + std::to_string(n) + ".csv"));
-  const int patches = n >= 6 ? 4 * n : n, gathered = 2 * n + 1;
-  EXPECT_EQ(ref.rows(), 16 * patches);
-  EXPECT_EQ(ref.cols(), gathered);
-  std::vector<MatrixXd> out(static_cast<std::size_t>(patches), MatrixXd::Zero(16, gathered));
-  for (int rp = 0; rp < patches; ++rp)
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        int patch = 0, row = 0;
-        if (n < 6) {
-          patch = (n - rp) % n;
-          row = j * 4 + i;
-        } else {
-          const int s = rp / 4, a = rp % 2, b = (rp % 4) / 2;
-          patch = 4 * ((s + n - 1) % n) + 2 * (1 - b) + (1 - a);
-          row = (3 - j) * 4 + (3 - i);
-        }
-        const Eigen::RowVectorXd r = ref.row(16 * rp + 4 * i + j);
-        MatrixXd& target = out[static_cast<std::size_t>(patch)];
-        for (int c = 0; c < gathered; ++c) target(row, c == 2 * n ? 0 : c + 1) = r(c) / r.sum();
-      }
-  return out;
-}
 
 bool have_reference() { return std::filesystem::exists(reference_tables() / "eopSct3.csv"); }
 
@@ -280,7 +246,7 @@ TEST(PolyhedralStar, MappedReferenceMeetsTheBi2Ring) {
   for (int n : kValences) {
     ConfigurationMask ref;
     ref.gathered = 2 * n + 1;
-    for (const auto& c : reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
+    for (const auto& c : star_reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
     const Net net = random_net(n, 31 * n);
     const Residuals r = residuals(apply(ref, net.points), net, n, reparam(n));
     // the tables' ~1e-10 watermark perturbations bound how well the reference satisfies C0 / (4)
@@ -295,7 +261,7 @@ TEST(PolyhedralStar, ReferenceSatisfiesRecoveredReparameterisation) {
   for (int n : kValences) {
     ConfigurationMask ref;
     ref.gathered = 2 * n + 1;
-    for (const auto& c : reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
+    for (const auto& c : star_reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
     for (unsigned seed = 1; seed <= 3; ++seed) {
       const Net net = random_net(n, 17 * n + seed);
       const Residuals r = residuals(apply(ref, net.points), net, n, reparam(n));
@@ -311,7 +277,7 @@ TEST(PolyhedralStar, CloseToTheReferenceSurfaces) {
     const ConfigurationMask ours = iga::basis::polyhedral::star_mask(n);
     ConfigurationMask ref;
     ref.gathered = 2 * n + 1;
-    for (const auto& c : reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
+    for (const auto& c : star_reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
     double worst = 0.0;
     for (unsigned seed = 1; seed <= 10; ++seed) {
       const Net net = random_net(n, 1000 * n + seed);
