@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include "basis/polyhedral/ngon_cap.hpp"
+#include "basis/polyhedral/polar_cap.hpp"
 #include "basis/polyhedral/star_cap.hpp"
+#include "basis/polyhedral/tjunction_cap.hpp"
 #include "io/report.hpp"
 
 int main(int argc, char** argv) {
@@ -36,6 +38,10 @@ int main(int argc, char** argv) {
       record("star" + std::to_string(n), [&] { return poly::derive_star_cap(n); });
       record("ngon" + std::to_string(n), [&] { return poly::derive_ngon_cap(n); });
     }
+    for (int n = 3; n <= 8; ++n) record("polar" + std::to_string(n), [&] { return poly::derive_polar_cap(n); });
+    record("T0", [] { return poly::derive_t0_cap(); });
+    record("T1", [] { return poly::derive_t1_cap(); });
+    record("T2", [] { return poly::derive_t2_cap(); });
     std::cout << report.dump(2) << std::endl;
     if (!json.empty()) iga::io::write_json(json, report);
     return 0;

@@ -177,7 +177,7 @@ Output polyhedral_output(const iga::mesh::PolyMesh& net, const Options& o) {
       list += (list.empty() ? "" : ", ") + name + " ×" + std::to_string(m.first) + " (first at " + m.second + ")";
     }
     throw iga::UnsupportedError("--basis polyhedral: no mask is available yet in this build for the configurations " + list +
-                                " of this net (available: regular, star, n-gon); no output written");
+                                " of this net (available: regular, star, n-gon, polar, T0, T1, T2); no output written");
   }
   Output out;
   std::vector<std::pair<int, int>> degrees;

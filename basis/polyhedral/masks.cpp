@@ -9,7 +9,9 @@
 #include "basis/polyhedral/bezier.hpp"
 #include "basis/polyhedral/configuration.hpp"
 #include "basis/polyhedral/ngon_cap.hpp"
+#include "basis/polyhedral/polar_cap.hpp"
 #include "basis/polyhedral/star_cap.hpp"
+#include "basis/polyhedral/tjunction_cap.hpp"
 #include "core/error.hpp"
 
 namespace iga::basis::polyhedral {
@@ -40,6 +42,35 @@ ConfigurationMask derive(Configuration c, int valence) {
                                e.what() + ")");
       }
       break;
+    case Configuration::Polar:
+      try {
+        m = polar_mask(valence);
+      } catch (const std::exception& e) {
+        throw UnsupportedError("polyhedral splines: no mask for a polar configuration of valence " +
+                               std::to_string(valence) + " (" + e.what() + ")");
+      }
+      break;
+    case Configuration::T0:
+      try {
+        m = t0_mask();
+      } catch (const std::exception& e) {
+        throw UnsupportedError(std::string("polyhedral splines: no mask for the T0 configuration (") + e.what() + ")");
+      }
+      break;
+    case Configuration::T1:
+      try {
+        m = t1_mask();
+      } catch (const std::exception& e) {
+        throw UnsupportedError(std::string("polyhedral splines: no mask for the T1 configuration (") + e.what() + ")");
+      }
+      break;
+    case Configuration::T2:
+      try {
+        m = t2_mask();
+      } catch (const std::exception& e) {
+        throw UnsupportedError(std::string("polyhedral splines: no mask for the T2 configuration (") + e.what() + ")");
+      }
+      break;
     default:
       throw UnsupportedError("polyhedral splines: the " + to_string(c) + " configuration (valence " +
                              std::to_string(valence) + ") has no mask in this build yet");
@@ -64,6 +95,10 @@ bool has_mask(Configuration c, int valence) {
     case Configuration::Regular: return true;
     case Configuration::Star:
     case Configuration::NGon: return valence == 3 || (valence >= 5 && valence <= 8);
+    case Configuration::Polar: return valence >= 3 && valence <= 8;
+    case Configuration::T0:
+    case Configuration::T1:
+    case Configuration::T2: return true;
     default: return false;
   }
 }

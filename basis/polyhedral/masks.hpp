@@ -1,6 +1,7 @@
 #pragma once
 // The masks of every configuration, degree-raised to bi-3: the one place that knows which derivation serves
-// which configuration (regular: bezier.hpp closed form; star: star_cap.hpp; others as they are derived).
+// which configuration (regular: bezier.hpp closed form; star: star_cap.hpp; n-gon: ngon_cap.hpp; polar:
+// polar_cap.hpp; T0, T1, T2: tjunction_cap.hpp).
 #include "basis/polyhedral/mask.hpp"
 
 namespace iga::basis::polyhedral {

@@ -27,6 +27,15 @@ mesh::PolyMesh grid(int n) {
   return mesh::PolyMesh::build(p, f);
 }
 
+// The net with z = 0 (the builders of polyhedral_nets.hpp jitter z).
+mesh::PolyMesh flatten(const mesh::PolyMesh& net) {
+  std::vector<Eigen::Vector3d> p = net.points();
+  for (auto& x : p) x.z() = 0.0;
+  std::vector<std::vector<Index>> faces;
+  for (Index f = 0; f < net.num_faces(); ++f) faces.emplace_back(net.face(f).begin(), net.face(f).end());
+  return mesh::PolyMesh::build(p, faces);
+}
+
 fem::PoissonResult solve(const mesh::PolyMesh& net, const std::string& problem) {
   const basis::Geometry g = basis::polyhedral::make_polyhedral_geometry(net);
   const fem::ManufacturedProblem m = fem::manufactured_problem(problem);
@@ -44,13 +53,12 @@ TEST(PolyhedralPoisson, PatchTest) {
       {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj")}, {"grid", grid(6)}};
   for (int n : {3, 5, 6, 7, 8}) {
     nets.emplace_back("star " + std::to_string(n), polyhedral_nets::star_net(n, 50 + n, true));
-    const mesh::PolyMesh ngon = polyhedral_nets::ngon_net(n, 60 + n);  // flattened to z = 0
-    std::vector<Eigen::Vector3d> p = ngon.points();
-    for (auto& x : p) x.z() = 0.0;
-    std::vector<std::vector<Index>> faces;
-    for (Index f = 0; f < ngon.num_faces(); ++f) faces.emplace_back(ngon.face(f).begin(), ngon.face(f).end());
-    nets.emplace_back("ngon " + std::to_string(n), mesh::PolyMesh::build(p, faces));
+    nets.emplace_back("ngon " + std::to_string(n), flatten(polyhedral_nets::ngon_net(n, 60 + n)));
   }
+  for (int n = 3; n <= 8; ++n) nets.emplace_back("polar " + std::to_string(n), flatten(polyhedral_nets::polar_net(n, 70 + n)));
+  nets.emplace_back("T0", flatten(polyhedral_nets::t0_net(false, 81)));
+  nets.emplace_back("T1", flatten(polyhedral_nets::t1_net(false, 82)));
+  nets.emplace_back("T2", flatten(polyhedral_nets::t2_net(false, 83)));
   for (const auto& [name, net] : nets) {
     const fem::PoissonResult r = solve(net, "linear");
     ASSERT_TRUE(r.errors);

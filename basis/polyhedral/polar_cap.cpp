@@ -1,0 +1,224 @@
+#include "basis/polyhedral/polar_cap.hpp"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/SVD>
+
+namespace iga::basis::polyhedral {
+namespace {
+
+constexpr int kDegreeU = 3;  // radial
+constexpr int kDegreeV = 2;  // circular
+constexpr int kCoefficients = (kDegreeU + 1) * (kDegreeV + 1);
+/// Relative singular-value threshold of the rank decisions (as g1_cap.cpp).
+constexpr double kRankTolerance = 1e-10;
+
+void check_valence(int n) {
+  if (n < 3 || n > 8) throw std::invalid_argument("polar cap: valence " + std::to_string(n) + " is not in 3..8");
+}
+
+int wrap(int k, int n) { return ((k % n) + n) % n; }
+
+/// The linear system over [12n unknown BB coefficients | n + 1 gathered vertices]; each row states
+/// row · (x, g) = 0.
+class PolarSystem {
+ public:
+  explicit PolarSystem(int n) : n_(n), unknowns_(kCoefficients * n) {}
+
+  int unknowns() const { return unknowns_; }
+  Eigen::RowVectorXd row() const { return Eigen::RowVectorXd::Zero(unknowns_ + n_ + 1); }
+  /// Column of b_ij of patch k.
+  int b(int k, int i, int j) const { return kCoefficients * wrap(k, n_) + j * (kDegreeU + 1) + i; }
+  /// Column of a gathered vertex: P (−1) or q_m.
+  int pole() const { return unknowns_; }
+  int q(int m) const { return unknowns_ + 1 + wrap(m, n_); }
+  void add(const Eigen::RowVectorXd& r) {
+    const double norm = r.norm();
+    if (norm > 0.0) rows_.push_back(r / norm);
+  }
+  const std::vector<Eigen::RowVectorXd>& rows() const { return rows_; }
+
+ private:
+  int n_, unknowns_;
+  std::vector<Eigen::RowVectorXd> rows_;
+};
+
+/// BB coefficient j (circular) of BB row w (w = 0: the shared boundary, w = 1: the next row) of the bi-2
+/// patch of q_k, as a row over the gathered columns. Its uniform biquadratic B-spline grid: row 0 = P, P, P
+/// (the collapsed fan triangles), row 1 = q_{k−1}, q_k, q_{k+1} (row 2, outside the configuration, affects
+/// neither the boundary nor ∂_w there). B-spline → Bézier per direction: ((c0+c1)/2, c1, (c1+c2)/2).
+void add_ring(PolarSystem& s, Eigen::RowVectorXd& r, int k, int w, int j, double factor) {
+  const double t[3][3] = {{0.5, 0.5, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.5, 0.5}};
+  const double tw[2][2] = {{0.5, 0.5}, {0.0, 1.0}};  // BB rows 0, 1 from B-spline rows 0, 1
+  for (int c = 0; c < 3; ++c) {
+    r(s.pole()) += factor * tw[w][0] * t[j][c];
+    r(s.q(k - 1 + c)) += factor * tw[w][1] * t[j][c];
+  }
+}
+
+/// Gram matrix of the fairness functional on one (3, 2) patch (Gauss–Legendre, exact).
+Eigen::MatrixXd fairness_gram(Fairness fairness) {
+  constexpr std::array<double, 5> nodes = {0.0469100770306680, 0.2307653449471585, 0.5, 0.7692346550528415,
+                                           0.9530899229693320};
+  constexpr std::array<double, 5> weights = {0.1184634425280945, 0.2393143352496832, 0.2844444444444444,
+                                             0.2393143352496832, 0.1184634425280945};
+  std::vector<std::pair<std::array<int, 2>, double>> terms;
+  if (fairness == Fairness::ThinPlate)
+    terms = {{{2, 0}, 1.0}, {{1, 1}, 2.0}, {{0, 2}, 1.0}};
+  else
+    terms = {{{3, 0}, 1.0}, {{2, 1}, 3.0}, {{1, 2}, 3.0}, {{0, 3}, 1.0}};
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(kCoefficients, kCoefficients);
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (std::size_t c = 0; c < nodes.size(); ++c)
+      for (const auto& [order, w] : terms) {
+        Eigen::VectorXd d(kCoefficients);
+        for (int j = 0; j <= kDegreeV; ++j)
+          for (int i = 0; i <= kDegreeU; ++i)
+            d(j * (kDegreeU + 1) + i) = bernstein_derivative(kDegreeU, i, nodes[a], order[0]) *
+                                        bernstein_derivative(kDegreeV, j, nodes[c], order[1]);
+        h += (w * weights[a] * weights[c]) * d * d.transpose();
+      }
+  return h;
+}
+
+PolarSystem constraints(int n) {
+  PolarSystem s(n);
+  for (int k = 0; k < n; ++k) {
+    for (int j = 0; j <= kDegreeV; ++j) {
+      // C0 to the bi-2 patch of q_k: b_3j = its BB coefficient (w = 0, j)
+      Eigen::RowVectorXd r = s.row();
+      r(s.b(k, 3, j)) = 1.0;
+      add_ring(s, r, k, 0, j, -1.0);
+      s.add(r);
+      // C1: ∂_u p_k(1, ·) = ½ ∂_w r_k(·, 0), i.e. 3 (b_3j − b_2j) = ½ · 2 (BB_1j − BB_0j)
+      r = s.row();
+      r(s.b(k, 3, j)) = 3.0;
+      r(s.b(k, 2, j)) = -3.0;
+      add_ring(s, r, k, 1, j, -1.0);
+      add_ring(s, r, k, 0, j, 1.0);
+      s.add(r);
+    }
+    for (int i = 0; i <= kDegreeU; ++i) {
+      // C1 to patch k + 1 along the spoke P q_{k+1} direction (v = 1 of k, v = 0 of k + 1)
+      Eigen::RowVectorXd r = s.row();
+      r(s.b(k, i, 2)) = 1.0;
+      r(s.b(k + 1, i, 0)) = -1.0;
+      s.add(r);
+      r = s.row();
+      r(s.b(k, i, 2)) += 1.0;
+      r(s.b(k, i, 1)) -= 1.0;
+      r(s.b(k + 1, i, 1)) -= 1.0;
+      r(s.b(k + 1, i, 0)) += 1.0;
+      s.add(r);
+    }
+    // collapse: b_0j of every patch = b_00 of patch 0 (the pole X)
+    for (int j = 0; j <= kDegreeV; ++j) {
+      if (k == 0 && j == 0) continue;
+      Eigen::RowVectorXd r = s.row();
+      r(s.b(k, 0, j)) = 1.0;
+      r(s.b(0, 0, 0)) = -1.0;
+      s.add(r);
+    }
+  }
+  // removable singularity: c_k = b_11 of patch k is X + U cos θ_k + V sin θ_k (θ_k = 2πk/n)
+  Eigen::RowVectorXd mean = s.row();
+  for (int k = 0; k < n; ++k) mean(s.b(k, 1, 1)) = 1.0;
+  mean(s.b(0, 0, 0)) = -static_cast<double>(n);
+  s.add(mean);
+  for (int m = 2; 2 * m <= n; ++m) {
+    Eigen::RowVectorXd rc = s.row(), rs = s.row();
+    for (int k = 0; k < n; ++k) {
+      const double angle = 2.0 * std::numbers::pi * m * k / n;
+      rc(s.b(k, 1, 1)) = std::cos(angle);
+      rs(s.b(k, 1, 1)) = std::sin(angle);
+    }
+    s.add(rc);
+    if (2 * m != n) s.add(rs);  // for 2m = n the sine mode vanishes identically
+  }
+  return s;
+}
+
+CapDerivation solve(int n, const PolarSystem& s, Fairness fairness) {
+  const int unknowns = s.unknowns(), gathered = n + 1;
+  const int m = static_cast<int>(s.rows().size());
+  Eigen::MatrixXd a(m, unknowns), b(m, gathered);
+  for (int r = 0; r < m; ++r) {
+    a.row(r) = s.rows()[static_cast<std::size_t>(r)].head(unknowns);
+    b.row(r) = -s.rows()[static_cast<std::size_t>(r)].tail(gathered);
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  int rank = 0;
+  while (rank < sigma.size() && sigma(rank) > kRankTolerance * sigma(0)) ++rank;
+  Eigen::MatrixXd ab(m, unknowns + gathered);
+  ab << a, b;
+  const Eigen::VectorXd sigma_ab = Eigen::JacobiSVD<Eigen::MatrixXd>(ab).singularValues();
+  int rank_ab = 0;
+  while (rank_ab < sigma_ab.size() && sigma_ab(rank_ab) > kRankTolerance * sigma_ab(0)) ++rank_ab;
+  if (rank_ab != rank)
+    throw std::runtime_error("polar cap, n = " + std::to_string(n) + ": inconsistent constraints (rank A = " +
+                             std::to_string(rank) + ", rank [A|B] = " + std::to_string(rank_ab) + ")");
+
+  const Eigen::MatrixXd v_r = svd.matrixV().leftCols(rank);
+  const Eigen::MatrixXd null = svd.matrixV().rightCols(unknowns - rank);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a * v_r);
+  Eigen::MatrixXd x = v_r * qr.solve(b);
+  x += v_r * qr.solve(b - a * x);  // one step of iterative refinement
+  if (null.cols() > 0) {
+    const Eigen::MatrixXd h = fairness_gram(fairness);
+    Eigen::MatrixXd hn(unknowns, null.cols()), hx(unknowns, gathered);
+    for (int k = 0; k < n; ++k) {
+      const int o = k * kCoefficients;
+      hn.middleRows(o, kCoefficients) = h * null.middleRows(o, kCoefficients);
+      hx.middleRows(o, kCoefficients) = h * x.middleRows(o, kCoefficients);
+    }
+    const Eigen::MatrixXd reduced = null.transpose() * hn;
+    x += null * reduced.ldlt().solve(-(null.transpose() * hx));
+  }
+
+  CapDerivation d;
+  d.unknowns = unknowns;
+  d.equations = m;
+  d.rank = rank;
+  d.rank_augmented = rank_ab;
+  d.null_dimension = unknowns - rank;
+  d.constraint_residual = m > 0 ? (a * x - b).cwiseAbs().maxCoeff() : 0.0;
+  d.mask.configuration = Configuration::Polar;
+  d.mask.valence = n;
+  d.mask.gathered = gathered;
+  for (int k = 0; k < n; ++k)
+    d.mask.patches.push_back(PatchMask{kDegreeU, kDegreeV, x.middleRows(k * kCoefficients, kCoefficients)});
+  return d;
+}
+
+}  // namespace
+
+CapDerivation derive_polar_cap(int n, Fairness fairness) {
+  check_valence(n);
+  const auto start = std::chrono::steady_clock::now();
+  CapDerivation d = solve(n, constraints(n), fairness);
+  d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return d;
+}
+
+ConfigurationMask polar_mask(int n) {
+  check_valence(n);
+  static std::mutex mutex;
+  static std::map<int, ConfigurationMask> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto it = cache.find(n);
+  if (it == cache.end()) it = cache.emplace(n, derive_polar_cap(n).mask).first;
+  return it->second;
+}
+
+}  // namespace iga::basis::polyhedral
