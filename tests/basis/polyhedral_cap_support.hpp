@@ -162,4 +162,60 @@ inline std::vector<MatrixXd> ngon_reference_in_our_layout(int n) {
   return out;
 }
 
+/// The reference table polarSct<n> in our layout, rows renormalised to sum 1 (README: watermark). Facts
+/// about the reference layout (public repository paramgupta107/polyhedral_splines, PolarPatchConstructor:
+/// gathered [P, first ring counter-clockwise], degree (3, 2); and the tables): columns = ours; patch k =
+/// ours; rows patch-major, 12 per patch, row i·3 + j with i radial (i = 0 the pole) → our row j·4 + i.
+/// (MappedReferenceMeetsTheRing confirms the mapping geometrically.)
+inline std::vector<MatrixXd> polar_reference_in_our_layout(int n) {
+  const MatrixXd ref = read_table(reference_tables() / ("polarSct" + std::to_string(n) + ".csv"));
+  EXPECT_EQ(ref.rows(), 12 * n);
+  EXPECT_EQ(ref.cols(), n + 1);
+  std::vector<MatrixXd> out(static_cast<std::size_t>(n), MatrixXd::Zero(12, n + 1));
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i <= 3; ++i)
+      for (int j = 0; j <= 2; ++j) {
+        const Eigen::RowVectorXd r = ref.row(12 * k + 3 * i + j);
+        out[static_cast<std::size_t>(k)].row(j * 4 + i) = r / r.sum();
+      }
+  return out;
+}
+
+/// The reference table in our layout, rows renormalised to sum 1 (README: watermark). Facts about the
+/// reference layout (public repository paramgupta107/polyhedral_splines, T0/T1/T2PatchConstructor: the
+/// vertices in the picture order = our columns; and the tables evaluated on the planar picture nets):
+///  - T0: 4 patches of 16 rows, row i·4 + j with i running up (our V) and j right to left (against our
+///    U); reference patches 0, 1, 2, 3 = bottom-left, top-left, bottom-right, top-right = our 0, 2, 1, 3;
+///    so reference row 16·r + i·4 + j → our patch p(r), row i·4 + (3 − j);
+///  - T1: reference patch 2α + β = our patch 4β + α, rows i·4 + j with i up (V), j right (U), as the
+///    picture layout of apply (our masks themselves run along (V, U));
+///  - T2: reference patch 4β + α = ours, row i·4 + j with i up (V) and j against U → our row i·4 + (3 − j).
+/// (ReferenceSatisfiesRecoveredReparameterisation confirms the mapping geometrically.)
+inline ConfigurationMask tjunction_reference_mask(const std::string& name) {
+  const MatrixXd ref = read_table(reference_tables() / (name + ".csv"));
+  const int patches = static_cast<int>(ref.rows()) / 16;
+  ConfigurationMask out;
+  out.gathered = static_cast<int>(ref.cols());
+  out.patches.assign(static_cast<std::size_t>(patches), {3, 3, MatrixXd::Zero(16, ref.cols())});
+  for (int r = 0; r < patches; ++r)
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        int patch = 0, row = 0;
+        if (name == "T0") {
+          const int ours[4] = {0, 2, 1, 3};
+          patch = ours[r];
+          row = 4 * i + (3 - j);
+        } else if (name == "T2") {
+          patch = r;
+          row = 4 * i + (3 - j);
+        } else {
+          patch = 4 * (r % 2) + r / 2;
+          row = 4 * i + j;
+        }
+        const Eigen::RowVectorXd v = ref.row(16 * r + 4 * i + j);
+        out.patches[static_cast<std::size_t>(patch)].coefficients.row(row) = v / v.sum();
+      }
+  return out;
+}
+
 }  // namespace polyhedral_cap_support

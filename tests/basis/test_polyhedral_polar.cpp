@@ -26,7 +26,14 @@
 
 #include "basis/polyhedral/polar_cap.hpp"
 
+#include "basis/polyhedral_cap_support.hpp"
+
 namespace {
+
+using polyhedral_cap_support::read_table;
+using polyhedral_cap_support::reference_tables;
+using polyhedral_cap_support::polar_reference_in_our_layout;
+using polyhedral_cap_support::tjunction_reference_mask;
 
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
@@ -225,56 +232,15 @@ TEST(PolyhedralPolar, PartitionOfUnityAndLinearPrecision) {
 
 // ---- comparison with the reference tables -----------------------------------------------------------
 
-std::filesystem::path reference_tables() {
-  return std::filesystem::path(IGA_SOURCE_DIR "/../shared/reference/polyhedral") / "src" / "Patch" / "Table";
-}
 
-MatrixXd read_table(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<double> row;
-    while (std::getline(ss, cell, ','))
-      if (!cell.empty()) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  MatrixXd m(static_cast<Eigen::Index>(rows.size()),
-             rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    for (std::size_t j = 0; j < rows[i].size(); ++j)
-      m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
-  return m;
-}
 
-/// The reference table polarSct<n> in our layout, rows renormalised to sum 1 (README: watermark). Facts
-/// about the reference layout (public repository paramgupta107/polyhedral_splines, PolarPatchConstructor:
-/// gathered [P, first ring counter-clockwise], degree (3, 2); and the tables): columns = ours; patch k =
-/// ours; rows patch-major, 12 per patch, row i·3 + j with i radial (i = 0 the pole) → our row j·4 + i.
-/// (MappedReferenceMeetsTheRing confirms the mapping geometrically.)
-std::vector<MatrixXd> reference_in_our_layout(int n) {
-  const MatrixXd ref = read_table(reference_tables() / ("polarSct" + std::to_string(n) + ".csv"));
-  EXPECT_EQ(ref.rows(), 12 * n);
-  EXPECT_EQ(ref.cols(), n + 1);
-  std::vector<MatrixXd> out(static_cast<std::size_t>(n), MatrixXd::Zero(12, n + 1));
-  for (int k = 0; k < n; ++k)
-    for (int i = 0; i <= 3; ++i)
-      for (int j = 0; j <= 2; ++j) {
-        const Eigen::RowVectorXd r = ref.row(12 * k + 3 * i + j);
-        out[static_cast<std::size_t>(k)].row(j * 4 + i) = r / r.sum();
-      }
-  return out;
-}
 
 bool have_reference() { return std::filesystem::exists(reference_tables() / "polarSct3.csv"); }
 
 ConfigurationMask reference_mask(int n) {
   ConfigurationMask ref;
   ref.gathered = n + 1;
-  for (const auto& c : reference_in_our_layout(n)) ref.patches.push_back({3, 2, c});
+  for (const auto& c : polar_reference_in_our_layout(n)) ref.patches.push_back({3, 2, c});
   return ref;
 }
 

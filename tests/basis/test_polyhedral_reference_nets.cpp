@@ -1,7 +1,7 @@
 // Our polyhedral surfaces against the reference implementation's masks on its own input nets
 // (../shared/reference/polyhedral, read only, skipped when absent): for every patch of a configuration with
 // a reference table, the maximum distance between our patch and the reference patch (both bi-3, sampled on a
-// 9 × 9 grid) relative to the net's bounding-box diagonal, reported per net and required <= 2e-2 (the
+// 9 × 9 grid; polar (3,2) patches degree-raised) relative to the net's bounding-box diagonal, reported per net and required <= 2e-2 (the
 // fairness functionals differ, so equality is not expected; a large gap means a wrong construction).
 #include <gtest/gtest.h>
 
@@ -25,11 +25,38 @@ namespace {
 // The reference masks in our layout (bi-3 rows × our gathered columns), per configuration; empty when the
 // configuration has no reference table here.
 std::vector<MatrixXd> reference_patches(Configuration c, int n) {
+  auto bicubic = [](const ConfigurationMask& m) {
+    std::vector<MatrixXd> out;
+    for (const PatchMask& p : m.patches) out.push_back(elevate(p, 3, 3).coefficients);
+    return out;
+  };
   switch (c) {
     case Configuration::Star: return star_reference_in_our_layout(n);
     case Configuration::NGon: return ngon_reference_in_our_layout(n);
+    case Configuration::Polar: {
+      ConfigurationMask m;
+      for (const MatrixXd& k : polar_reference_in_our_layout(n)) m.patches.push_back({3, 2, k});
+      return bicubic(m);
+    }
+    case Configuration::T0: return bicubic(tjunction_reference_mask("T0"));
+    case Configuration::T1: return bicubic(tjunction_reference_mask("T1"));
+    case Configuration::T2: return bicubic(tjunction_reference_mask("T2"));
     default: return {};
   }
+}
+
+// Max distance of two bi-3 patches sampled at the same 9 × 9 parameters; the T1 masks run along (v, u) of
+// the reference's picture, so the transposed parameterisation is tried as well.
+double patch_distance(const MatrixXd& a, const MatrixXd& b) {
+  double same = 0.0, transposed = 0.0;
+  for (int i = 0; i <= 8; ++i) {
+    for (int j = 0; j <= 8; ++j) {
+      const double u = i / 8.0, v = j / 8.0;
+      same = std::max(same, (bezier3(a, u, v).x - bezier3(b, u, v).x).norm());
+      transposed = std::max(transposed, (bezier3(a, u, v).x - bezier3(b, v, u).x).norm());
+    }
+  }
+  return std::min(same, transposed);
 }
 
 }  // namespace
@@ -68,12 +95,7 @@ TEST(PolyhedralReferenceNets, CloseToTheReferenceSurfaces) {
       for (std::size_t k = 0; k < site.gathered.size(); ++k) points.row(static_cast<Eigen::Index>(k)) = net.point(site.gathered[k]).transpose();
       const MatrixXd ours = bicubic_mask(site.type, site.valence).patches[static_cast<std::size_t>(space->patch(e))].coefficients * points;
       const MatrixXd theirs = ref[static_cast<std::size_t>(space->patch(e))] * points;
-      for (int i = 0; i <= 8; ++i) {
-        for (int j = 0; j <= 8; ++j) {
-          const double u = i / 8.0, v = j / 8.0;
-          worst = std::max(worst, (bezier3(ours, u, v).x - bezier3(theirs, u, v).x).norm() / diagonal);
-        }
-      }
+      worst = std::max(worst, patch_distance(ours, theirs) / diagonal);
       ++patches;
     }
     if (patches == 0) continue;

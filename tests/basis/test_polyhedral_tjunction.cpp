@@ -25,7 +25,14 @@
 
 #include "basis/polyhedral/tjunction_cap.hpp"
 
+#include "basis/polyhedral_cap_support.hpp"
+
 namespace {
+
+using polyhedral_cap_support::read_table;
+using polyhedral_cap_support::reference_tables;
+using polyhedral_cap_support::polar_reference_in_our_layout;
+using polyhedral_cap_support::tjunction_reference_mask;
 
 using Eigen::MatrixXd;
 using Eigen::Vector2d;
@@ -367,67 +374,8 @@ TEST(PolyhedralTJunction, PartitionOfUnityAndLinearPrecision) {
 
 // ---- comparison with the reference tables -----------------------------------------------------------
 
-std::filesystem::path reference_tables() {
-  return std::filesystem::path(IGA_SOURCE_DIR "/../shared/reference/polyhedral") / "src" / "Patch" / "Table";
-}
 
-MatrixXd read_table(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<double> row;
-    while (std::getline(ss, cell, ','))
-      if (!cell.empty()) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  MatrixXd m(static_cast<Eigen::Index>(rows.size()),
-             rows.empty() ? 0 : static_cast<Eigen::Index>(rows[0].size()));
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    for (std::size_t j = 0; j < rows[i].size(); ++j)
-      m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = rows[i][j];
-  return m;
-}
 
-/// The reference table in our layout, rows renormalised to sum 1 (README: watermark). Facts about the
-/// reference layout (public repository paramgupta107/polyhedral_splines, T0/T1/T2PatchConstructor: the
-/// vertices in the picture order = our columns; and the tables evaluated on the planar picture nets):
-///  - T0: 4 patches of 16 rows, row i·4 + j with i running up (our V) and j right to left (against our
-///    U); reference patches 0, 1, 2, 3 = bottom-left, top-left, bottom-right, top-right = our 0, 2, 1, 3;
-///    so reference row 16·r + i·4 + j → our patch p(r), row i·4 + (3 − j);
-///  - T1: reference patch 2α + β = our patch 4β + α, rows i·4 + j with i up (V), j right (U), as the
-///    picture layout of apply (our masks themselves run along (V, U));
-///  - T2: reference patch 4β + α = ours, row i·4 + j with i up (V) and j against U → our row i·4 + (3 − j).
-/// (ReferenceSatisfiesRecoveredReparameterisation confirms the mapping geometrically.)
-ConfigurationMask reference_mask(const Config& c) {
-  const MatrixXd ref = read_table(reference_tables() / (c.name + ".csv"));
-  const int patches = static_cast<int>(ref.rows()) / 16;
-  ConfigurationMask out;
-  out.gathered = static_cast<int>(ref.cols());
-  out.patches.assign(static_cast<std::size_t>(patches), {3, 3, MatrixXd::Zero(16, ref.cols())});
-  for (int r = 0; r < patches; ++r)
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        int patch = 0, row = 0;
-        if (c.name == "T0") {
-          const int ours[4] = {0, 2, 1, 3};
-          patch = ours[r];
-          row = 4 * i + (3 - j);
-        } else if (c.name == "T2") {
-          patch = r;
-          row = 4 * i + (3 - j);
-        } else {
-          patch = 4 * (r % 2) + r / 2;
-          row = 4 * i + j;
-        }
-        const Eigen::RowVectorXd v = ref.row(16 * r + 4 * i + j);
-        out.patches[static_cast<std::size_t>(patch)].coefficients.row(row) = v / v.sum();
-      }
-  return out;
-}
 
 bool have_reference() { return std::filesystem::exists(reference_tables() / "T0.csv"); }
 
@@ -436,7 +384,7 @@ TEST(PolyhedralTJunction, ReferenceSatisfiesRecoveredReparameterisation) {
   // and (4) with them up to the tables' watermark (~1e-10 entrywise).
   if (!have_reference()) GTEST_SKIP() << "reference tables not present";
   for (const Case& c : cases()) {
-    const ConfigurationMask ref = reference_mask(*c.config);
+    const ConfigurationMask ref = tjunction_reference_mask(c.config->name);
     ASSERT_EQ(static_cast<int>(ref.patches.size()), c.patches);
     ASSERT_EQ(ref.gathered, c.gathered);
     for (unsigned seed = 1; seed <= 3; ++seed) {
@@ -451,7 +399,7 @@ TEST(PolyhedralTJunction, ReferenceSatisfiesRecoveredReparameterisation) {
 TEST(PolyhedralTJunction, CloseToTheReferenceSurfaces) {
   if (!have_reference()) GTEST_SKIP() << "reference tables not present";
   for (const Case& c : cases()) {
-    const ConfigurationMask ours = c.mask(), ref = reference_mask(*c.config);
+    const ConfigurationMask ours = c.mask(), ref = tjunction_reference_mask(c.config->name);
     double worst = 0.0;
     for (unsigned seed = 1; seed <= 10; ++seed) {
       const Net net = random_net(*c.config, 1000 + seed);
