@@ -36,6 +36,37 @@ mesh::PolyMesh flatten(const mesh::PolyMesh& net) {
   return mesh::PolyMesh::build(p, faces);
 }
 
+// The unit square with a T0 configuration: rows 0..2 of 6 vertices (5 quads per row), rows 3..5 of 5
+// vertices (4 quads), and between rows 2 and 3 four quads and one triangle (b2, b3, t2), whose corner t2
+// has valence 5 (the T0 triangle (5, 4, 4) of the paper, a change in the number of columns).
+mesh::PolyMesh square_with_t0() {
+  std::vector<Eigen::Vector3d> p;
+  std::vector<std::vector<Index>> rows;
+  for (int r = 0; r < 6; ++r) {
+    const int m = r < 3 ? 6 : 5;
+    rows.emplace_back();
+    for (int k = 0; k < m; ++k) {
+      rows.back().push_back(static_cast<Index>(p.size()));
+      p.emplace_back(double(k) / (m - 1), r / 5.0, 0.0);
+    }
+  }
+  std::vector<std::vector<Index>> f;
+  for (int r = 0; r < 5; ++r) {
+    const auto& lo = rows[static_cast<std::size_t>(r)];
+    const auto& hi = rows[static_cast<std::size_t>(r + 1)];
+    if (lo.size() == hi.size()) {
+      for (std::size_t k = 0; k + 1 < lo.size(); ++k) f.push_back({lo[k], lo[k + 1], hi[k + 1], hi[k]});
+    } else {
+      f.push_back({lo[0], lo[1], hi[1], hi[0]});
+      f.push_back({lo[1], lo[2], hi[2], hi[1]});
+      f.push_back({lo[2], lo[3], hi[2]});
+      f.push_back({lo[3], lo[4], hi[3], hi[2]});
+      f.push_back({lo[4], lo[5], hi[4], hi[3]});
+    }
+  }
+  return mesh::PolyMesh::build(p, f);
+}
+
 fem::PoissonResult solve(const mesh::PolyMesh& net, const std::string& problem) {
   const basis::Geometry g = basis::polyhedral::make_polyhedral_geometry(net);
   const fem::ManufacturedProblem m = fem::manufactured_problem(problem);
@@ -48,6 +79,12 @@ fem::PoissonResult solve(const mesh::PolyMesh& net, const std::string& problem) 
 
 }  // namespace
 
+TEST(PolyhedralPoisson, UnitSquareNetWithATJunction) {
+  int t0 = 0;
+  for (const auto& site : basis::polyhedral::classify(square_with_t0())) t0 += site.type == basis::polyhedral::Configuration::T0;
+  EXPECT_EQ(t0, 1);
+}
+
 TEST(PolyhedralPoisson, PatchTest) {
   std::vector<std::pair<std::string, mesh::PolyMesh>> nets{
       {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj")}, {"grid", grid(6)}};
@@ -57,6 +94,7 @@ TEST(PolyhedralPoisson, PatchTest) {
   }
   for (int n = 3; n <= 8; ++n) nets.emplace_back("polar " + std::to_string(n), flatten(polyhedral_nets::polar_net(n, 70 + n)));
   nets.emplace_back("T0", flatten(polyhedral_nets::t0_net(false, 81)));
+  nets.emplace_back("unit square with T0", square_with_t0());
   nets.emplace_back("T1", flatten(polyhedral_nets::t1_net(false, 82)));
   nets.emplace_back("T2", flatten(polyhedral_nets::t2_net(false, 83)));
   for (const auto& [name, net] : nets) {
@@ -80,7 +118,8 @@ TEST(PolyhedralPoisson, ConvergenceUnderNetRefinement) {
     double l2_floor, h1_floor;
   };
   std::vector<Case> cases{{"grid", grid(6), 2.9, 1.85},
-                          {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj"), 2.1, 1.6}};
+                          {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj"), 2.1, 1.6},
+                          {"unit square with T0", square_with_t0(), 2.4, 1.5}};  // measured 2.55 / 1.63
   for (const Case& c : cases) {
     std::vector<double> l2, h1;
     for (int level = 0; level <= 3; ++level) {
