@@ -35,34 +35,28 @@ constexpr std::array<double, 5> kGaussNodes = {0.0469100770306680, 0.23076534494
 constexpr std::array<double, 5> kGaussWeights = {0.1184634425280945, 0.2393143352496832, 0.2844444444444444,
                                                  0.2393143352496832, 0.1184634425280945};
 
-/// Derivative (ku, kv) of the 16 bi-3 Bernstein products at (u, v), rows j·4 + i.
-Eigen::VectorXd bicubic_derivative(double u, double v, int ku, int kv) {
-  Eigen::VectorXd r(kCapCoefficients);
-  for (int j = 0; j <= kCapDegree; ++j)
-    for (int i = 0; i <= kCapDegree; ++i)
-      r(j * (kCapDegree + 1) + i) =
-          bernstein_derivative(kCapDegree, i, u, ku) * bernstein_derivative(kCapDegree, j, v, kv);
-  return r;
-}
+}  // namespace
 
-/// Gram matrix of the fairness functional on one bi-3 patch (exact by Gauss quadrature).
-Eigen::MatrixXd fairness_gram(Fairness fairness) {
+Eigen::MatrixXd fairness_gram(Fairness fairness, int degree_u, int degree_v) {
   std::vector<std::pair<std::array<int, 2>, double>> terms;
   if (fairness == Fairness::ThinPlate)
     terms = {{{2, 0}, 1.0}, {{1, 1}, 2.0}, {{0, 2}, 1.0}};
   else
     terms = {{{3, 0}, 1.0}, {{2, 1}, 3.0}, {{1, 2}, 3.0}, {{0, 3}, 1.0}};
-  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(kCapCoefficients, kCapCoefficients);
+  const int n = (degree_u + 1) * (degree_v + 1);
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd d(n);
   for (std::size_t a = 0; a < kGaussNodes.size(); ++a)
     for (std::size_t b = 0; b < kGaussNodes.size(); ++b)
       for (const auto& [k, w] : terms) {
-        const Eigen::VectorXd d = bicubic_derivative(kGaussNodes[a], kGaussNodes[b], k[0], k[1]);
+        for (int j = 0; j <= degree_v; ++j)
+          for (int i = 0; i <= degree_u; ++i)
+            d(j * (degree_u + 1) + i) = bernstein_derivative(degree_u, i, kGaussNodes[a], k[0]) *
+                                        bernstein_derivative(degree_v, j, kGaussNodes[b], k[1]);
         h += (w * kGaussWeights[a] * kGaussWeights[b]) * d * d.transpose();
       }
   return h;
 }
-
-}  // namespace
 
 double bernstein(int degree, int i, double t) {
   if (i < 0 || i > degree) return 0.0;
@@ -174,7 +168,7 @@ CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairn
   const Eigen::MatrixXd null = v.rightCols(unknowns - rank);
 
   // fairness: minimise (x_p + N z)ᵀ H (x_p + N z) over z
-  const Eigen::MatrixXd h_patch = fairness_gram(fairness);
+  const Eigen::MatrixXd h_patch = fairness_gram(fairness, kCapDegree, kCapDegree);
   Eigen::MatrixXd x = x_p;
   if (null.cols() > 0) {
     Eigen::MatrixXd hn(unknowns, null.cols()), hx(unknowns, gathered_);

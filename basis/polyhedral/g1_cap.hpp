@@ -118,4 +118,8 @@ class SectorCapSystem {
 double bernstein(int degree, int i, double t);
 double bernstein_derivative(int degree, int i, double t, int order);
 
+/// Gram matrix of the fairness functional on one patch of degree (degree_u, degree_v) ≤ (4, 4) over [0,1]²,
+/// rows/columns j·(degree_u + 1) + i (exact: 5-point Gauss–Legendre per direction).
+Eigen::MatrixXd fairness_gram(Fairness fairness, int degree_u, int degree_v);
+
 }  // namespace iga::basis::polyhedral

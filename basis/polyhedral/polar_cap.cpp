@@ -66,31 +66,6 @@ void add_ring(PolarSystem& s, Eigen::RowVectorXd& r, int k, int w, int j, double
   }
 }
 
-/// Gram matrix of the fairness functional on one (3, 2) patch (Gauss–Legendre, exact).
-Eigen::MatrixXd fairness_gram(Fairness fairness) {
-  constexpr std::array<double, 5> nodes = {0.0469100770306680, 0.2307653449471585, 0.5, 0.7692346550528415,
-                                           0.9530899229693320};
-  constexpr std::array<double, 5> weights = {0.1184634425280945, 0.2393143352496832, 0.2844444444444444,
-                                             0.2393143352496832, 0.1184634425280945};
-  std::vector<std::pair<std::array<int, 2>, double>> terms;
-  if (fairness == Fairness::ThinPlate)
-    terms = {{{2, 0}, 1.0}, {{1, 1}, 2.0}, {{0, 2}, 1.0}};
-  else
-    terms = {{{3, 0}, 1.0}, {{2, 1}, 3.0}, {{1, 2}, 3.0}, {{0, 3}, 1.0}};
-  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(kCoefficients, kCoefficients);
-  for (std::size_t a = 0; a < nodes.size(); ++a)
-    for (std::size_t c = 0; c < nodes.size(); ++c)
-      for (const auto& [order, w] : terms) {
-        Eigen::VectorXd d(kCoefficients);
-        for (int j = 0; j <= kDegreeV; ++j)
-          for (int i = 0; i <= kDegreeU; ++i)
-            d(j * (kDegreeU + 1) + i) = bernstein_derivative(kDegreeU, i, nodes[a], order[0]) *
-                                        bernstein_derivative(kDegreeV, j, nodes[c], order[1]);
-        h += (w * weights[a] * weights[c]) * d * d.transpose();
-      }
-  return h;
-}
-
 PolarSystem constraints(int n) {
   PolarSystem s(n);
   for (int k = 0; k < n; ++k) {
@@ -175,7 +150,7 @@ CapDerivation solve(int n, const PolarSystem& s, Fairness fairness) {
   Eigen::MatrixXd x = v_r * qr.solve(b);
   x += v_r * qr.solve(b - a * x);  // one step of iterative refinement
   if (null.cols() > 0) {
-    const Eigen::MatrixXd h = fairness_gram(fairness);
+    const Eigen::MatrixXd h = fairness_gram(fairness, kDegreeU, kDegreeV);
     Eigen::MatrixXd hn(unknowns, null.cols()), hx(unknowns, gathered);
     for (int k = 0; k < n; ++k) {
       const int o = k * kCoefficients;
