@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -48,6 +49,39 @@ inline Jet bezier3(const MatrixXd& bb, double u, double v) {
       j.dv += bern3(a, u) * bern3_d(b, v) * p;
     }
   return j;
+}
+
+/// A bi-2 patch straight from the uniform biquadratic B-spline basis on its 3 × 3 grid (rows along w).
+inline Jet bspline2_jet(const Vector3d (&grid)[3][3], double s, double w) {
+  auto n2 = [](int i, double t) {
+    return i == 0 ? 0.5 * (1 - t) * (1 - t) : i == 1 ? 0.5 * (-2 * t * t + 2 * t + 1) : 0.5 * t * t;
+  };
+  auto n2d = [](int i, double t) { return i == 0 ? -(1 - t) : i == 1 ? 1 - 2 * t : t; };
+  Jet j{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      j.x += n2(c, s) * n2(r, w) * grid[r][c];
+      j.du += n2d(c, s) * n2(r, w) * grid[r][c];
+      j.dv += n2(c, s) * n2d(r, w) * grid[r][c];
+    }
+  return j;
+}
+
+/// Partition of unity (row sums 1) and affine invariance (an affine map of the gathered points maps the BB
+/// coefficients alike) of every patch of a mask, to 1e-12, with a random affine map.
+inline void expect_affine_invariant(const ConfigurationMask& m, const MatrixXd& points, std::mt19937& rng,
+                                    const std::string& label) {
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  Eigen::Matrix3d l;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) l(i, j) = r(rng);
+  const Vector3d o(r(rng), r(rng), r(rng));
+  const MatrixXd mapped = (points * l.transpose()).rowwise() + o.transpose();
+  for (const auto& p : m.patches) {
+    EXPECT_LT((p.coefficients.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-12) << label;
+    const MatrixXd via = ((p.coefficients * points) * l.transpose()).rowwise() + o.transpose();
+    EXPECT_LT((p.coefficients * mapped - via).cwiseAbs().maxCoeff(), 1e-12) << label;
+  }
 }
 
 /// The cap of one net: per patch its 16 BB points.

@@ -86,21 +86,6 @@ Net random_net(int n, unsigned seed) {
 
 
 
-/// A bi-2 patch straight from the uniform biquadratic B-spline basis on its 3 × 3 grid (rows along w).
-Jet bspline2_jet(const Vector3d (&grid)[3][3], double s, double w) {
-  auto n2 = [](int i, double t) {
-    return i == 0 ? 0.5 * (1 - t) * (1 - t) : i == 1 ? 0.5 * (-2 * t * t + 2 * t + 1) : 0.5 * t * t;
-  };
-  auto n2d = [](int i, double t) { return i == 0 ? -(1 - t) : i == 1 ? 1 - 2 * t : t; };
-  Jet j{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      j.x += n2(c, s) * n2(r, w) * grid[r][c];
-      j.du += n2d(c, s) * n2(r, w) * grid[r][c];
-      j.dv += n2(c, s) * n2d(r, w) * grid[r][c];
-    }
-  return j;
-}
 
 /// The bi-2 patch of p_k (grid centred at p_k: w-row 0 r_k, c_k, c_{k+1}; w-row 1 d_k, p_k, r_{k+1};
 /// w-row 2 random), s from the centroid of B_k to that of A_k.
@@ -237,22 +222,11 @@ TEST(PolyhedralNGon, G1AcrossEveryBoundaryOnRandomNets) {
 
 TEST(PolyhedralNGon, PartitionOfUnityAndLinearPrecision) {
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> r(-1.0, 1.0);
   for (int n : kValences) {
     const ConfigurationMask m = iga::basis::polyhedral::ngon_mask(n);
     const Net net = random_net(n, 7 * n);
     // an affine map f(x) = L x + o of space
-    Eigen::Matrix3d l;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) l(i, j) = r(rng);
-    const Vector3d o(r(rng), r(rng), r(rng));
-    const MatrixXd mapped = (net.points * l.transpose()).rowwise() + o.transpose();
-    for (const auto& p : m.patches) {
-      EXPECT_LT((p.coefficients.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-12) << "n = " << n;
-      const MatrixXd direct = p.coefficients * mapped;
-      const MatrixXd via = ((p.coefficients * net.points) * l.transpose()).rowwise() + o.transpose();
-      EXPECT_LT((direct - via).cwiseAbs().maxCoeff(), 1e-12) << "n = " << n;
-    }
+    expect_affine_invariant(m, net.points, rng, "n = " + std::to_string(n));
   }
 }
 

@@ -33,7 +33,10 @@ namespace {
 using polyhedral_cap_support::read_table;
 using polyhedral_cap_support::reference_tables;
 using polyhedral_cap_support::polar_reference_in_our_layout;
-using polyhedral_cap_support::tjunction_reference_mask;
+using polyhedral_cap_support::apply;
+using polyhedral_cap_support::bspline2_jet;
+using polyhedral_cap_support::Jet;
+using polyhedral_cap_support::expect_affine_invariant;
 
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
@@ -60,10 +63,6 @@ Net random_net(int n, unsigned seed) {
 
 // ---- independent evaluation -------------------------------------------------------------------------
 
-struct Jet {
-  Vector3d x, du, dv;
-};
-
 double bern(int d, int i, double t) {
   if (i < 0 || i > d) return 0.0;
   double c = 1.0;
@@ -85,11 +84,6 @@ Jet polar_jet(const MatrixXd& bb, double u, double v) {
   return j;
 }
 
-std::vector<MatrixXd> apply(const ConfigurationMask& mask, const MatrixXd& points) {
-  std::vector<MatrixXd> out;
-  for (const auto& p : mask.patches) out.push_back(p.coefficients * points);
-  return out;
-}
 
 /// The bi-2 patch of q_k from the uniform biquadratic B-spline basis: s from the q_{k−1} side to the q_{k+1}
 /// side, w away from the pole.
@@ -98,18 +92,7 @@ Jet ring_jet(const Net& net, int n, int k, double s, double w) {
   auto o = [&](int m) -> Vector3d { return net.outer.row(((m % n) + n) % n).transpose(); };
   const Vector3d p = net.points.row(0).transpose();
   const Vector3d grid[3][3] = {{p, p, p}, {q(k - 1), q(k), q(k + 1)}, {o(k - 1), o(k), o(k + 1)}};
-  auto n2 = [](int i, double t) {
-    return i == 0 ? 0.5 * (1 - t) * (1 - t) : i == 1 ? 0.5 * (-2 * t * t + 2 * t + 1) : 0.5 * t * t;
-  };
-  auto n2d = [](int i, double t) { return i == 0 ? -(1 - t) : i == 1 ? 1 - 2 * t : t; };
-  Jet j{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      j.x += n2(c, s) * n2(r, w) * grid[r][c];
-      j.du += n2d(c, s) * n2(r, w) * grid[r][c];
-      j.dv += n2(c, s) * n2d(r, w) * grid[r][c];
-    }
-  return j;
+  return bspline2_jet(grid, s, w);
 }
 
 struct Residuals {
@@ -212,21 +195,10 @@ TEST(PolyhedralPolar, CollapsedPoleWithTangentPlane) {
 
 TEST(PolyhedralPolar, PartitionOfUnityAndLinearPrecision) {
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> r(-1.0, 1.0);
   for (int n = 3; n <= 8; ++n) {
     const ConfigurationMask m = iga::basis::polyhedral::polar_mask(n);
     const Net net = random_net(n, 11 * n);
-    Eigen::Matrix3d l;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) l(i, j) = r(rng);
-    const Vector3d o(r(rng), r(rng), r(rng));
-    const MatrixXd mapped = (net.points * l.transpose()).rowwise() + o.transpose();
-    for (const auto& p : m.patches) {
-      EXPECT_LT((p.coefficients.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-12) << "n = " << n;
-      const MatrixXd direct = p.coefficients * mapped;
-      const MatrixXd via = ((p.coefficients * net.points) * l.transpose()).rowwise() + o.transpose();
-      EXPECT_LT((direct - via).cwiseAbs().maxCoeff(), 1e-12) << "n = " << n;
-    }
+    expect_affine_invariant(m, net.points, rng, "n = " + std::to_string(n));
   }
 }
 

@@ -87,18 +87,7 @@ Jet bi2_jet(const Net& net, int n, int k, double s, double w) {
                                {net.outer_row[static_cast<std::size_t>(k % n)].row(0),
                                 net.outer_row[static_cast<std::size_t>(k % n)].row(1),
                                 net.outer_row[static_cast<std::size_t>(k % n)].row(2)}};
-  auto n2 = [](int i, double t) {
-    return i == 0 ? 0.5 * (1 - t) * (1 - t) : i == 1 ? 0.5 * (-2 * t * t + 2 * t + 1) : 0.5 * t * t;
-  };
-  auto n2d = [](int i, double t) { return i == 0 ? -(1 - t) : i == 1 ? 1 - 2 * t : t; };
-  Jet j{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      j.x += n2(c, s) * n2(r, w) * grid[r][c];
-      j.du += n2d(c, s) * n2(r, w) * grid[r][c];
-      j.dv += n2(c, s) * n2d(r, w) * grid[r][c];
-    }
-  return j;
+  return bspline2_jet(grid, s, w);
 }
 
 /// The reparameterisation coefficients on the sector level (see star_cap.hpp): the paper's formulas with
@@ -215,22 +204,11 @@ TEST(PolyhedralStar, G1AcrossEveryBoundaryOnRandomNets) {
 
 TEST(PolyhedralStar, PartitionOfUnityAndLinearPrecision) {
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> r(-1.0, 1.0);
   for (int n : kValences) {
     const ConfigurationMask m = iga::basis::polyhedral::star_mask(n);
     const Net net = random_net(n, 7 * n);
     // an affine map f(x) = L x + o of space
-    Eigen::Matrix3d l;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) l(i, j) = r(rng);
-    const Vector3d o(r(rng), r(rng), r(rng));
-    const MatrixXd mapped = (net.points * l.transpose()).rowwise() + o.transpose();
-    for (const auto& p : m.patches) {
-      EXPECT_LT((p.coefficients.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-12) << "n = " << n;
-      const MatrixXd direct = p.coefficients * mapped;
-      const MatrixXd via = ((p.coefficients * net.points) * l.transpose()).rowwise() + o.transpose();
-      EXPECT_LT((direct - via).cwiseAbs().maxCoeff(), 1e-12) << "n = " << n;
-    }
+    expect_affine_invariant(m, net.points, rng, "n = " + std::to_string(n));
   }
 }
 

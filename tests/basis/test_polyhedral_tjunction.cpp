@@ -31,7 +31,6 @@ namespace {
 
 using polyhedral_cap_support::read_table;
 using polyhedral_cap_support::reference_tables;
-using polyhedral_cap_support::polar_reference_in_our_layout;
 using polyhedral_cap_support::tjunction_reference_mask;
 
 using Eigen::MatrixXd;
@@ -210,34 +209,13 @@ Net random_net(const Config& c, unsigned seed) {
 
 // ---- independent evaluation -------------------------------------------------------------------------
 
-struct Jet {
-  Vector3d x, du, dv;
-  Vector3d along(const Vector2d& d) const { return d(0) * du + d(1) * dv; }
-};
+using polyhedral_cap_support::bspline2_jet;
+using polyhedral_cap_support::Jet;
+using polyhedral_cap_support::expect_affine_invariant;
 
-double bern3(int i, double t) {
-  const double c[4] = {1, 3, 3, 1};
-  return c[i] * std::pow(t, i) * std::pow(1.0 - t, 3 - i);
-}
-double bern3_d(int i, double t) {
-  auto b2 = [](int j, double s) {
-    const double c[3] = {1, 2, 1};
-    return (j < 0 || j > 2) ? 0.0 : c[j] * std::pow(s, j) * std::pow(1.0 - s, 2 - j);
-  };
-  return 3.0 * (b2(i - 1, t) - b2(i, t));
-}
+Vector3d along(const Jet& j, const Vector2d& d) { return d(0) * j.du + d(1) * j.dv; }
 
-Jet bezier3(const MatrixXd& bb, const Vector2d& x) {
-  Jet j{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
-  for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) {
-      const Vector3d p = bb.row(b * 4 + a).transpose();
-      j.x += bern3(a, x(0)) * bern3(b, x(1)) * p;
-      j.du += bern3_d(a, x(0)) * bern3(b, x(1)) * p;
-      j.dv += bern3(a, x(0)) * bern3_d(b, x(1)) * p;
-    }
-  return j;
-}
+Jet bezier3(const MatrixXd& bb, const Vector2d& x) { return polyhedral_cap_support::bezier3(bb, x(0), x(1)); }
 
 /// Neighbour k (index into cfg.neighbours) at (s, w) from the uniform biquadratic B-spline basis.
 Jet bi2_jet(const Config& cfg, const Net& net, int k, const Vector2d& x) {
@@ -247,18 +225,7 @@ Jet bi2_jet(const Config& cfg, const Net& net, int k, const Vector2d& x) {
     for (int c = 0; c < 3; ++c)
       grid[r][c] = net.points.row(nb.rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)]).transpose();
   for (int c = 0; c < 3; ++c) grid[2][c] = net.outer[static_cast<std::size_t>(k)][static_cast<std::size_t>(c)];
-  auto n2 = [](int i, double t) {
-    return i == 0 ? 0.5 * (1 - t) * (1 - t) : i == 1 ? 0.5 * (-2 * t * t + 2 * t + 1) : 0.5 * t * t;
-  };
-  auto n2d = [](int i, double t) { return i == 0 ? -(1 - t) : i == 1 ? 1 - 2 * t : t; };
-  Jet j{Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      j.x += n2(c, x(0)) * n2(r, x(1)) * grid[r][c];
-      j.du += n2d(c, x(0)) * n2(r, x(1)) * grid[r][c];
-      j.dv += n2(c, x(0)) * n2d(r, x(1)) * grid[r][c];
-    }
-  return j;
+  return bspline2_jet(grid, x(0), x(1));
 }
 
 struct Residuals {
@@ -274,7 +241,7 @@ Residuals residuals(const Config& cfg, const std::vector<MatrixXd>& cap, const N
       const Jet p = j.p_is_cap ? bezier3(cap[static_cast<std::size_t>(j.p)], j.po + t * j.pa)
                                : bi2_jet(cfg, net, j.p, j.po + t * j.pa);
       res.c0 = std::max(res.c0, (q.x - p.x).norm());
-      const Vector3d g1 = q.along(j.qc) + j.a(t) * p.along(j.pc) - j.b(t) * p.along(j.pa);
+      const Vector3d g1 = along(q, j.qc) + j.a(t) * along(p, j.pc) - j.b(t) * along(p, j.pa);
       res.g1 = std::max(res.g1, g1.norm());
     }
   return res;
@@ -355,20 +322,10 @@ TEST(PolyhedralTJunction, G1AcrossEveryBoundaryOnRandomNets) {
 
 TEST(PolyhedralTJunction, PartitionOfUnityAndLinearPrecision) {
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> r(-1.0, 1.0);
   for (const Case& c : cases()) {
     const ConfigurationMask m = c.mask();
     const Net net = random_net(*c.config, 77);
-    Eigen::Matrix3d l;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) l(i, j) = r(rng);
-    const Vector3d o(r(rng), r(rng), r(rng));
-    const MatrixXd mapped = (net.points * l.transpose()).rowwise() + o.transpose();
-    for (const auto& p : m.patches) {
-      EXPECT_LT((p.coefficients.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-12) << c.config->name;
-      const MatrixXd via = ((p.coefficients * net.points) * l.transpose()).rowwise() + o.transpose();
-      EXPECT_LT((p.coefficients * mapped - via).cwiseAbs().maxCoeff(), 1e-12) << c.config->name;
-    }
+    expect_affine_invariant(m, net.points, rng, c.config->name);
   }
 }
 
