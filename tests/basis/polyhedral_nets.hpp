@@ -172,4 +172,13 @@ inline mesh::PolyMesh t2_net(bool mirror, unsigned seed = 6) {
   return grid_net(xy, faces, mirror, seed);
 }
 
+/// The same net with z = 0 (the builders above jitter z).
+inline mesh::PolyMesh flattened(const mesh::PolyMesh& net) {
+  std::vector<Eigen::Vector3d> p = net.points();
+  for (auto& x : p) x.z() = 0.0;
+  std::vector<std::vector<Index>> faces;
+  for (Index f = 0; f < net.num_faces(); ++f) faces.emplace_back(net.face(f).begin(), net.face(f).end());
+  return mesh::PolyMesh::build(p, faces);
+}
+
 }  // namespace polyhedral_nets

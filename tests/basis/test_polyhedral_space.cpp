@@ -82,15 +82,6 @@ int compare_normals(const Geometry& g, double& worst) {
 
 }  // namespace
 
-// The same net with z = 0.
-mesh::PolyMesh flattened(const mesh::PolyMesh& net) {
-  std::vector<Eigen::Vector3d> p = net.points();
-  for (auto& x : p) x.z() = 0.0;
-  std::vector<std::vector<Index>> faces;
-  for (Index f = 0; f < net.num_faces(); ++f) faces.emplace_back(net.face(f).begin(), net.face(f).end());
-  return mesh::PolyMesh::build(p, faces);
-}
-
 // Random 3D (or planar) nets with one star or one n-gon of each supported valence, one polar fan of each
 // valence 3..8, a T0, a T1 and a T2 (3D: as drawn and mirrored; planar: as drawn only — the mirrored net is oriented
 // clockwise, so its area comes out negative). The polar patches are degenerate at the pole: compare_normals
@@ -100,20 +91,20 @@ std::vector<std::pair<std::string, mesh::PolyMesh>> cap_nets(unsigned seed, bool
   for (int n : {3, 5, 6, 7, 8}) {
     nets.emplace_back("star " + std::to_string(n), star_net(n, seed + static_cast<unsigned>(n), planar));
     mesh::PolyMesh ngon = ngon_net(n, seed + 100 + static_cast<unsigned>(n));
-    nets.emplace_back("ngon " + std::to_string(n), planar ? flattened(ngon) : ngon);
+    nets.emplace_back("ngon " + std::to_string(n), planar ? polyhedral_nets::flattened(ngon) : ngon);
   }
   for (int n = 3; n <= 8; ++n) {
     mesh::PolyMesh polar = polar_net(n, seed + 200 + static_cast<unsigned>(n));
-    nets.emplace_back("polar " + std::to_string(n), planar ? flattened(polar) : polar);
+    nets.emplace_back("polar " + std::to_string(n), planar ? polyhedral_nets::flattened(polar) : polar);
   }
   for (bool mirror : {false, true}) {
     if (planar && mirror) continue;
     mesh::PolyMesh t0 = t0_net(mirror, seed + 300 + (mirror ? 1u : 0u));
-    nets.emplace_back(std::string("T0") + (mirror ? " mirrored" : ""), planar ? flattened(t0) : t0);
+    nets.emplace_back(std::string("T0") + (mirror ? " mirrored" : ""), planar ? polyhedral_nets::flattened(t0) : t0);
     mesh::PolyMesh t1 = t1_net(mirror, seed + 310 + (mirror ? 1u : 0u));
-    nets.emplace_back(std::string("T1") + (mirror ? " mirrored" : ""), planar ? flattened(t1) : t1);
+    nets.emplace_back(std::string("T1") + (mirror ? " mirrored" : ""), planar ? polyhedral_nets::flattened(t1) : t1);
     mesh::PolyMesh t2 = t2_net(mirror, seed + 320 + (mirror ? 1u : 0u));
-    nets.emplace_back(std::string("T2") + (mirror ? " mirrored" : ""), planar ? flattened(t2) : t2);
+    nets.emplace_back(std::string("T2") + (mirror ? " mirrored" : ""), planar ? polyhedral_nets::flattened(t2) : t2);
   }
   return nets;
 }

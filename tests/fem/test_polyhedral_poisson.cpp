@@ -27,15 +27,6 @@ mesh::PolyMesh grid(int n) {
   return mesh::PolyMesh::build(p, f);
 }
 
-// The net with z = 0 (the builders of polyhedral_nets.hpp jitter z).
-mesh::PolyMesh flatten(const mesh::PolyMesh& net) {
-  std::vector<Eigen::Vector3d> p = net.points();
-  for (auto& x : p) x.z() = 0.0;
-  std::vector<std::vector<Index>> faces;
-  for (Index f = 0; f < net.num_faces(); ++f) faces.emplace_back(net.face(f).begin(), net.face(f).end());
-  return mesh::PolyMesh::build(p, faces);
-}
-
 // The unit square with a T0 configuration: rows 0..2 of 6 vertices (5 quads per row), rows 3..5 of 5
 // vertices (4 quads), and between rows 2 and 3 four quads and one triangle (b2, b3, t2), whose corner t2
 // has valence 5 (the T0 triangle (5, 4, 4) of the paper, a change in the number of columns).
@@ -90,13 +81,13 @@ TEST(PolyhedralPoisson, PatchTest) {
       {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj")}, {"grid", grid(6)}};
   for (int n : {3, 5, 6, 7, 8}) {
     nets.emplace_back("star " + std::to_string(n), polyhedral_nets::star_net(n, 50 + n, true));
-    nets.emplace_back("ngon " + std::to_string(n), flatten(polyhedral_nets::ngon_net(n, 60 + n)));
+    nets.emplace_back("ngon " + std::to_string(n), polyhedral_nets::flattened(polyhedral_nets::ngon_net(n, 60 + n)));
   }
-  for (int n = 3; n <= 8; ++n) nets.emplace_back("polar " + std::to_string(n), flatten(polyhedral_nets::polar_net(n, 70 + n)));
-  nets.emplace_back("T0", flatten(polyhedral_nets::t0_net(false, 81)));
+  for (int n = 3; n <= 8; ++n) nets.emplace_back("polar " + std::to_string(n), polyhedral_nets::flattened(polyhedral_nets::polar_net(n, 70 + n)));
+  nets.emplace_back("T0", polyhedral_nets::flattened(polyhedral_nets::t0_net(false, 81)));
   nets.emplace_back("unit square with T0", square_with_t0());
-  nets.emplace_back("T1", flatten(polyhedral_nets::t1_net(false, 82)));
-  nets.emplace_back("T2", flatten(polyhedral_nets::t2_net(false, 83)));
+  nets.emplace_back("T1", polyhedral_nets::flattened(polyhedral_nets::t1_net(false, 82)));
+  nets.emplace_back("T2", polyhedral_nets::flattened(polyhedral_nets::t2_net(false, 83)));
   for (const auto& [name, net] : nets) {
     const fem::PoissonResult r = solve(net, "linear");
     ASSERT_TRUE(r.errors);
