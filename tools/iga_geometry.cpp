@@ -26,6 +26,7 @@
 #include "basis/polyhedral/bezier.hpp"
 #include "basis/polyhedral/configuration.hpp"
 #include "basis/polyhedral/masks.hpp"
+#include "basis/polyhedral/space.hpp"
 #include "core/error.hpp"
 #include "io/bv.hpp"
 #include "io/report.hpp"
@@ -118,106 +119,38 @@ Output cc_output(const iga::mesh::PolyMesh& net, const Options& o) {
   return out;
 }
 
-/// "star5", "ngon3", "polar6", "regular", "T0" (with sep " n=": "star n=5").
-std::string site_name(const poly::ConfigurationSite& s, const std::string& sep = "") {
+/// "star5", "ngon3", "polar6", "regular", "T0".
+std::string site_name(const poly::ConfigurationSite& s) {
   std::string name = to_string(s.type);
   if (s.type == poly::Configuration::Star || s.type == poly::Configuration::NGon || s.type == poly::Configuration::Polar) {
-    name += sep + std::to_string(s.valence);
+    name += std::to_string(s.valence);
   }
   return name;
 }
 
-/// The extraction operator of a configuration in the paper's output degrees (basis/polyhedral/masks.hpp), or
-/// null when this build has none or its derivation failed (the reason is kept for the error message).
-std::map<std::pair<int, int>, std::string>& mask_failures() {
-  static std::map<std::pair<int, int>, std::string> f;
-  return f;
-}
-
-const poly::ConfigurationMask* available_mask(const poly::ConfigurationSite& site) {
-  if (!poly::has_mask(site.type, site.valence)) return nullptr;
-  try {
-    return &poly::native_mask(site.type, site.valence);
-  } catch (const iga::UnsupportedError& e) {
-    mask_failures()[{static_cast<int>(site.type), site.valence}] = e.what();
-    return nullptr;
-  }
-}
-
-iga::basis::ElementKind element_kind(const poly::ConfigurationSite& s) {
-  using iga::basis::Family;
-  iga::basis::ElementKind k;
-  switch (s.type) {
-    case poly::Configuration::Regular: break;
-    case poly::Configuration::Star:
-    case poly::Configuration::NGon: k.family = Family::Irregular; k.valence = s.valence; break;
-    case poly::Configuration::Polar: k.family = Family::Polar; k.valence = s.valence; break;
-    default: k.family = Family::TJunction; break;
-  }
-  return k;
-}
-
 Output polyhedral_output(const iga::mesh::PolyMesh& net, const Options& o) {
   using namespace iga::basis;
-  const auto sites = poly::classify(net);
-  // Refuse before writing anything when a configuration has no mask yet.
-  std::map<std::string, std::pair<int, std::string>> missing;  // name → (count, first site)
-  for (const auto& s : sites) {
-    if (available_mask(s)) continue;
-    auto& m = missing[site_name(s, " n=")];
-    if (m.first++ == 0) {
-      m.second = (s.at_face ? "face " : "vertex ") + std::to_string(s.centre + 1);
-      const auto f = mask_failures().find({static_cast<int>(s.type), s.valence});
-      if (f != mask_failures().end()) m.second += "; " + f->second;
-    }
-  }
-  if (!missing.empty()) {
-    std::string list;
-    for (const auto& [name, m] : missing) {
-      list += (list.empty() ? "" : ", ") + name + " ×" + std::to_string(m.first) + " (first at " + m.second + ")";
-    }
-    throw iga::UnsupportedError("--basis polyhedral: no mask is available yet in this build for the configurations " + list +
-                                " of this net (available: regular, star, n-gon, polar, T0, T1, T2); no output written");
-  }
+  // The space classifies the net and refuses unsupported configurations and configurations without a mask
+  // with one error, before anything is written; its geometry (bi-3) is what the .vtu samples.
+  Geometry geometry = poly::make_polyhedral_geometry(net);
+  const auto& space = dynamic_cast<const poly::PolyhedralSpace&>(geometry.space());
   Output out;
-  std::vector<std::pair<int, int>> degrees;
-  std::vector<ElementKind> kinds;
-  std::vector<Eigen::MatrixXd> blocks;
   std::map<std::string, std::pair<int, int>> per_configuration;  // name → (configurations, patches)
-  Index total_rows = 0;
-  for (const auto& s : sites) {
-    const poly::ConfigurationMask& mask = *available_mask(s);
-    if (static_cast<int>(mask.patches.size()) != s.num_patches || mask.gathered != static_cast<int>(s.gathered.size())) {
-      throw std::logic_error("the " + to_string(s.type) + " mask has " + std::to_string(mask.patches.size()) + " patches over " +
-                             std::to_string(mask.gathered) + " vertices; the configuration needs " + std::to_string(s.num_patches) +
-                             " over " + std::to_string(s.gathered.size()));
-    }
+  for (const auto& s : space.sites()) {
+    // The .bv gets the patches in the degrees the paper outputs (regular bi-2, polar (3,2)) unless raised.
+    const poly::ConfigurationMask& mask = poly::native_mask(s.type, s.valence);
     Eigen::MatrixXd gathered(static_cast<Index>(s.gathered.size()), 3);
     for (std::size_t k = 0; k < s.gathered.size(); ++k) gathered.row(static_cast<Index>(k)) = net.point(s.gathered[k]).transpose();
     for (const poly::PatchMask& pm : mask.patches) {
       poly::BezierPatch patch{pm.degree_u, pm.degree_v, pm.coefficients * gathered};
       if (o.degree_raise) patch = poly::elevate(patch, 3, 3);
       out.patches.push_back({poly::bv_group_name(s.type), patch.degree_u, patch.degree_v, patch.coefficients});
-      degrees.emplace_back(patch.degree_u, patch.degree_v);
-      kinds.push_back(element_kind(s));
-      total_rows += patch.coefficients.rows();
-      blocks.push_back(patch.coefficients);
     }
     auto& c = per_configuration[site_name(s)];
     ++c.first;
     c.second += static_cast<int>(mask.patches.size());
   }
-  if (!sites.empty()) {
-    const int dim = net.is_planar() ? 2 : 3;
-    Eigen::MatrixXd cp(total_rows, dim);
-    Index row = 0;
-    for (const auto& b : blocks) {
-      cp.middleRows(row, b.rows()) = b.leftCols(dim);
-      row += b.rows();
-    }
-    auto space = std::make_shared<poly::BezierPatchSpace>(std::move(degrees), std::move(kinds));
-    out.geometry = std::make_unique<Geometry>(space, cp);
-  }
+  out.geometry = std::make_unique<Geometry>(std::move(geometry));
   nlohmann::json conf = nlohmann::json::object();
   for (const auto& [name, c] : per_configuration) conf[name] = {{"configurations", c.first}, {"patches", c.second}};
   out.report["configurations"] = conf;
