@@ -118,41 +118,4 @@ PatchValues evaluate(const BezierPatch& patch, const Eigen::Matrix2Xd& pts, int 
   return r;
 }
 
-BezierPatchSpace::BezierPatchSpace(std::vector<std::pair<int, int>> degrees, std::vector<ElementKind> kinds)
-    : degrees_(std::move(degrees)), kinds_(std::move(kinds)) {
-  if (kinds_.size() != degrees_.size()) throw InputError("BezierPatchSpace: one element kind per patch is needed");
-  offsets_.push_back(0);
-  for (const auto& [du, dv] : degrees_) {
-    if (du < 1 || du > 30 || dv < 1 || dv > 30) {
-      throw InputError("BezierPatchSpace: patch degree (" + std::to_string(du) + ", " + std::to_string(dv) + ") is not in 1..30");
-    }
-    const Index n = static_cast<Index>(du + 1) * (dv + 1);
-    max_local_ = std::max(max_local_, n);
-    offsets_.push_back(offsets_.back() + n);
-  }
-  dofs_.resize(static_cast<std::size_t>(offsets_.back()));
-  for (Index i = 0; i < offsets_.back(); ++i) dofs_[static_cast<std::size_t>(i)] = i;
-}
-
-std::span<const Index> BezierPatchSpace::dofs(Index e) const {
-  const auto a = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(e)]);
-  const auto b = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(e) + 1]);
-  return std::span<const Index>(dofs_.data() + a, b - a);
-}
-
-void BezierPatchSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
-  const auto [du, dv] = degrees_[static_cast<std::size_t>(e)];
-  out.resize((du + 1) * (dv + 1), pts.cols(), derivatives);
-  out.value = bernstein_tensor(du, dv, pts, 0, 0);
-  if (derivatives >= 1) {
-    out.du = bernstein_tensor(du, dv, pts, 1, 0);
-    out.dv = bernstein_tensor(du, dv, pts, 0, 1);
-  }
-  if (derivatives >= 2) {
-    out.duu = bernstein_tensor(du, dv, pts, 2, 0);
-    out.duv = bernstein_tensor(du, dv, pts, 1, 1);
-    out.dvv = bernstein_tensor(du, dv, pts, 0, 2);
-  }
-}
-
 }  // namespace iga::basis::polyhedral

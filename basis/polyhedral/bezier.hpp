@@ -6,13 +6,11 @@
 // is row j·(degree_u + 1) + i. Parameters (u, v) ∈ [0,1]² (the patch's own domain); derivatives are with
 // respect to (u, v).
 #include <Eigen/Core>
-#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "basis/polyhedral/mask.hpp"
-#include "basis/space.hpp"
 
 namespace iga::basis::polyhedral {
 
@@ -51,34 +49,5 @@ struct PatchValues {
   Eigen::MatrixXd xuu, xuv, xvv;    ///< filled for derivatives >= 2
 };
 PatchValues evaluate(const BezierPatch& patch, const Eigen::Matrix2Xd& pts, int derivatives);
-
-/// The Bernstein "super space" of a list of patches: element e is patch e on [0,1]², and its
-/// (degree_u+1)(degree_v+1) tensor Bernstein polynomials are its own dofs (first_dof(e), …, in the coefficient
-/// layout above), shared with no other element — a discontinuous space. A Geometry over it whose control
-/// points are the patches' BB coefficients is the patchwork surface itself, which is how patches are sampled
-/// for output (io/vtu_writer) before a smooth space is assembled. It has no boundary edges.
-class BezierPatchSpace final : public Space {
- public:
-  /// degrees: (degree_u, degree_v) per patch (each 1..30); kinds: one per patch.
-  BezierPatchSpace(std::vector<std::pair<int, int>> degrees, std::vector<ElementKind> kinds);
-
-  std::string name() const override { return "bezier-patches"; }
-  Index num_dofs() const override { return offsets_.back(); }
-  Index num_elements() const override { return static_cast<Index>(degrees_.size()); }
-  ElementKind kind(Index e) const override { return kinds_[static_cast<std::size_t>(e)]; }
-  std::span<const Index> dofs(Index e) const override;
-  Index max_local_dofs() const override { return max_local_; }
-  void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
-  std::vector<BoundaryEdge> boundary_edges() const override { return {}; }
-  std::vector<std::string> boundary_part_names() const override { return {}; }
-  Index first_dof(Index e) const { return offsets_[static_cast<std::size_t>(e)]; }
-
- private:
-  std::vector<std::pair<int, int>> degrees_;
-  std::vector<ElementKind> kinds_;
-  std::vector<Index> offsets_;  // size elements + 1
-  std::vector<Index> dofs_;     // 0 .. num_dofs − 1
-  Index max_local_ = 0;
-};
 
 }  // namespace iga::basis::polyhedral

@@ -123,38 +123,3 @@ TEST(PolyhedralBezier, EvaluationMatchesClosedForms) {
 }
 
 }  // namespace
-
-namespace {
-
-TEST(PolyhedralBezier, PatchSpaceIsThePatchworkOfItsPatches) {
-  using iga::basis::ElementKind;
-  using iga::basis::Family;
-  const BezierPatch a{2, 2, random_matrix(9, 3, 21)}, b{3, 2, random_matrix(12, 3, 22)};
-  auto space = std::make_shared<BezierPatchSpace>(std::vector<std::pair<int, int>>{{2, 2}, {3, 2}},
-                                                  std::vector<ElementKind>{ElementKind{}, ElementKind{iga::basis::Shape::Quad, Family::Polar, 4, false}});
-  ASSERT_EQ(space->num_dofs(), 21);
-  ASSERT_EQ(space->num_elements(), 2);
-  EXPECT_EQ(space->dofs(1).size(), 12u);
-  EXPECT_EQ(space->dofs(1)[0], 9);
-  EXPECT_EQ(space->max_local_dofs(), 12);
-  EXPECT_EQ(space->kind(1).family, Family::Polar);
-  Eigen::MatrixXd cp(21, 3);
-  cp << a.coefficients, b.coefficients;
-  const iga::basis::Geometry g(space, cp);
-  const Eigen::Matrix2Xd pts = random_points(10, 23);
-  for (int e = 0; e < 2; ++e) {
-    iga::basis::GeometryValues gv;
-    g.evaluate(e, pts, gv);
-    const PatchValues pv = evaluate(e == 0 ? a : b, pts, 1);
-    EXPECT_LT((gv.x.transpose() - pv.x).cwiseAbs().maxCoeff(), 1e-14);
-    EXPECT_LT((gv.xu.transpose() - pv.xu).cwiseAbs().maxCoeff(), 1e-13);
-    EXPECT_LT((gv.xv.transpose() - pv.xv).cwiseAbs().maxCoeff(), 1e-13);
-    iga::basis::BasisValues bv;
-    space->evaluate(e, pts, 2, bv);
-    for (int k = 0; k < pts.cols(); ++k) EXPECT_NEAR(bv.value.col(k).sum(), 1.0, 1e-14);  // partition of unity
-    EXPECT_LT(bv.duu.colwise().sum().cwiseAbs().maxCoeff(), 1e-12);
-  }
-  EXPECT_THROW(BezierPatchSpace({{0, 2}}, {ElementKind{}}), iga::InputError);
-}
-
-}  // namespace
