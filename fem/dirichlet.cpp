@@ -88,23 +88,24 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
   if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 0.0) {
     throw NumericalError("Dirichlet projection: the independent boundary traces are not definite");
   }
-  const Eigen::MatrixXd coupling = ldlt.solve(Eigen::MatrixXd(msj));
-  // The dependent traces must lie in the span of S: M_JJ(j, j) = M_SJ(:, j) · A(:, j).
+  // Column by column (A = M_SS⁻¹ M_SJ is local, hence sparse): memory O(|S|), not O(|S|·|J|). Each dependent
+  // trace must lie in the span of S: M_JJ(j, j) = M_SJ(:, j) · A(:, j).
   std::vector<Index> all_dofs = bc.dofs;
   bc.dofs.clear();
   for (Index a : s_local) bc.dofs.push_back(all_dofs[static_cast<std::size_t>(a)]);
   bc.values = ldlt.solve(bs);
   std::vector<Eigen::Triplet<double>> c;
+  Eigen::VectorXd column(ns);
   for (Index b = 0; b < nj; ++b) {
     const Index jb = j_local[static_cast<std::size_t>(b)];
+    column = ldlt.solve(Eigen::VectorXd(msj.col(b)));
     double fit = 0.0;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(msj, b); it; ++it) fit += it.value() * coupling(it.row(), b);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(msj, b); it; ++it) fit += it.value() * column(it.row());
     if (std::abs(fit - mdd.coeff(jb, jb)) > 1e-8 * max_diag) {
       throw NumericalError("Dirichlet projection: a boundary trace is not in the span of the independent ones");
     }
     for (Index a = 0; a < ns; ++a) {
-      const double v = coupling(a, b);
-      if (std::abs(v) > 1e-13) c.emplace_back(a, all_dofs[static_cast<std::size_t>(jb)], v);
+      if (std::abs(column(a)) > 1e-13) c.emplace_back(a, all_dofs[static_cast<std::size_t>(jb)], column(a));
     }
   }
   bc.coupling.resize(ns, m.rows());
