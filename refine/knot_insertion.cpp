@@ -114,6 +114,7 @@ std::vector<double> interval_midpoints(const SplineCurve& c, const std::vector<I
 }
 
 SplineCurve insert_knot_boehm(const SplineCurve& c, double x) {
+  validate(c);
   check_inside(c, x);
   const int p = c.degree;
   const Index n = c.num_control_points();
@@ -137,6 +138,7 @@ SplineCurve insert_knot_boehm(const SplineCurve& c, double x) {
 SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& xs_in) {
   // All knots in one backward sweep (Boehm's rule applied knot by knot from the right end, in place, as in
   // Piegl and Tiller's knot-vector refinement): O((n + r) p) instead of a copy of the curve per knot.
+  validate(c);
   if (xs_in.empty()) return c;
   for (double x : xs_in) check_inside(c, x);
   std::vector<double> xs = xs_in;
@@ -184,6 +186,7 @@ SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& 
 }
 
 SplineCurve insert_knots_oslo(const SplineCurve& c, const std::vector<double>& xs) {
+  validate(c);
   for (double x : xs) check_inside(c, x);
   const int p = c.degree;
   SplineCurve out;

@@ -34,6 +34,9 @@ std::vector<Index> domain_intervals(const SplineCurve& curve);
 /// InputError for an index out of range or not strictly increasing.
 std::vector<double> interval_midpoints(const SplineCurve& curve, const std::vector<Index>& intervals);
 
+/// Knot insertion (every function below, and refine_smooth on a SplineCurve) first checks the curve with
+/// validate() and that each knot to insert lies in the domain: InputError otherwise.
+///
 /// Boehm: inserts x (inside the domain) once. The interval used is the non-empty one containing x.
 SplineCurve insert_knot_boehm(const SplineCurve& curve, double x);
 /// Boehm applied knot by knot.

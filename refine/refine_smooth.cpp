@@ -2,28 +2,19 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <exception>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "core/error.hpp"
+#include "refine/refine_smooth_stream.hpp"
 
 namespace iga::refine {
 namespace {
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-// (num / den) for an affine weight; 0/0 (all the knots involved coincide, so both points carry the same
-// arguments) is 0.
-[[noreturn, gnu::noinline, gnu::cold]] void zero_span() {
-  throw NumericalError("refine-and-smooth: a zero knot span in an affine combination");
-}
-[[gnu::always_inline]] inline double ratio(double num, double den) {
-  if (den > 0.0) [[likely]] return num / den;
-  if (num == 0.0) return 0.0;
-  zero_span();
-}
+using detail::ratio;
 
 // The index sets and the polar labels of the points P^λ_i. Positions p are Z indices for odd d and the Z
 // intervals (p, p+1) for even d.
@@ -181,7 +172,6 @@ int apply(const Action& a, Out&& out, const A& prev, const B& self, const C& nex
   return 0;
 }
 
-// The refine stage: P^0 (even d) or P^1 (odd d) on positions L.first..L.last.
 // The input of one run in the paper's convention, without copies: k knots t[0..k-1], k - d + 1 control
 // points (rows of cp, any number of columns).
 struct Input {
@@ -192,20 +182,20 @@ struct Input {
 };
 
 // Refine-stage point at position p (P^0 for even d, P^1 for odd d): a copy of an input row, or (3) for a new
-// knot of odd degree (Q_{p-1}, Q_{p+1} share d - 1 arguments). Writes dim values with stride `stride`.
-[[gnu::always_inline]] inline int refine_point(const Layout& L, const Input& in, Index p, double* out, Index stride) {
+// knot of odd degree (Q_{p-1}, Q_{p+1} share d - 1 arguments).
+int refine_point(const Layout& L, const Input& in, Index p, double* out) {
   const Index h = L.d / 2, rows = in.cp->rows(), dim = in.cp->cols();
   const double* src = in.cp->data();
   const Index r = L.count_le[static_cast<std::size_t>(p)] - 1;  // the original knot at or below p
   if (L.d % 2 == 0 || L.in_y[static_cast<std::size_t>(p)]) {
     const Index row = L.d % 2 == 0 ? r - h + 1 : r - h;
-    for (Index c = 0; c < dim; ++c) out[c * stride] = src[row + c * rows];
+    for (Index c = 0; c < dim; ++c) out[c] = src[row + c * rows];
     return 0;
   }
   const Index qa = r - h, qb = r + 1 - h;
   const double ta = in.t[qa], td = in.t[qb + L.d - 1];
   const double w = ratio(L.at(p) - ta, td - ta);
-  for (Index c = 0; c < dim; ++c) out[c * stride] = (1.0 - w) * src[qa + c * rows] + w * src[qb + c * rows];
+  for (Index c = 0; c < dim; ++c) out[c] = (1.0 - w) * src[qa + c * rows] + w * src[qb + c * rows];
   return 1;
 }
 
@@ -213,7 +203,7 @@ struct Input {
 RowMatrix refine_stage(const Layout& L, const Input& in, long long& count) {
   const Index n = L.last - L.first + 1;
   RowMatrix P(n, in.cp->cols());
-  for (Index p = L.first; p <= L.last; ++p) count += refine_point(L, in, p, P.row(p - L.first).data(), 1);
+  for (Index p = L.first; p <= L.last; ++p) count += refine_point(L, in, p, P.row(p - L.first).data());
   return P;
 }
 
@@ -239,158 +229,6 @@ RowMatrix run_levels(const Layout& L, const Input& in, std::vector<char>& valid,
   return P;
 }
 
-// Applies an action to raw points of DIM (compile-time when > 0, else `dim`) coordinates.
-template <int DIM>
-inline int apply_raw(const Action& a, double* out, const double* prev, const double* self, const double* next,
-                     Index dim) {
-  const Index m = DIM > 0 ? DIM : dim;
-  switch (a.kind) {
-    case Action::copy:
-      for (Index c = 0; c < m; ++c) out[c] = self[c];
-      return 0;
-    case Action::left_pair:
-      for (Index c = 0; c < m; ++c) out[c] = a.w0 * prev[c] + a.w1 * self[c];
-      return 1;
-    case Action::right_pair:
-      for (Index c = 0; c < m; ++c) out[c] = a.w0 * self[c] + a.w1 * next[c];
-      return 1;
-    case Action::factorised:
-      for (Index c = 0; c < m; ++c) {
-        out[c] = a.pm * (a.dm * prev[c] + (1.0 - a.dm) * self[c]) + (1.0 - a.pm) * ((1.0 - a.de) * self[c] + a.de * next[c]);
-      }
-      return 3;
-    case Action::three:
-      for (Index c = 0; c < m; ++c) out[c] = a.w0 * prev[c] + a.w1 * self[c] + a.w2 * next[c];
-      return 2;
-    case Action::marker:
-      return 0;
-  }
-  return 0;
-}
-
-// §5: P^λ_i stored in the same place for every λ, all levels in ONE sweep: at step m the refine stage makes
-// position m and level ℓ (λ = λ_0 + 2ℓ) position m − ℓ − 1, which needs level ℓ − 1 at m − ℓ (made earlier in
-// this step), at m − ℓ − 1 (in place) and at m − ℓ − 2 (overwritten already: one saved point per level).
-// Position m − (number of levels) is then final and goes straight to the output if it survived the end
-// conditions. Working memory: a ring of (levels + 1) points and two points per level, independent of n.
-//
-// Every final point depends on the refine-stage points of at most `levels` positions on either side, so the
-// sweep runs on a range [begin, end) of positions by starting levels + 1 positions early and stopping
-// `levels` positions late (those positions only feed the range; the points they would miss near the
-// artificial ends are never final inside it). Combinations are counted for positions inside the range only,
-// so ranges add up to the count of one sweep.
-struct Sweep {
-  const Layout* L = nullptr;
-  const Input* in = nullptr;
-  Index n = 0;          // positions
-  int levels = 0;
-  Index expected = 0;   // surviving points = output rows
-  double* dst = nullptr;  // output, column-major expected × dim
-};
-
-// Sweeps [begin, end). `first` is the position of the first surviving point: found here when negative (the
-// range must then start at 0), else given. Returns the affine combinations; adds the surviving points to got.
-template <int DIM>
-long long sweep(const Sweep& S, Index begin, Index end, Index& first, Index& got) {
-  const Layout& L = *S.L;
-  const Index n = S.n, dim = S.in->cp->cols(), expected = S.expected;
-  const Index m_dim = DIM > 0 ? DIM : dim;
-  const int levels = S.levels;
-  const Index start = std::max<Index>(0, begin - levels - 1), stop = std::min<Index>(n, end + levels);
-  Index ring_size = 1;
-  while (ring_size < levels + 2) ring_size *= 2;
-  const Index mask = ring_size - 1;
-  std::vector<double> ring(static_cast<std::size_t>(ring_size * dim), 0.0);
-  std::vector<char> ring_valid(static_cast<std::size_t>(ring_size), 0);
-  std::vector<double> scratch(static_cast<std::size_t>(2 * (levels + 1) * dim), 0.0);
-  std::vector<double*> saved(static_cast<std::size_t>(levels + 1));
-  for (int l = 0; l <= levels; ++l) saved[static_cast<std::size_t>(l)] = scratch.data() + 2 * l * dim;
-  double* tmp = scratch.data() + dim;  // the second half of a pair that is not a saved point
-  std::vector<char> saved_valid(static_cast<std::size_t>(levels + 1), 0);
-  long long combinations = 0;
-  for (Index m = start; m < stop + levels; ++m) {
-    if (m < stop) {
-      const int c = refine_point(L, *S.in, L.first + m, ring.data() + (m & mask) * dim, 1);
-      if (m >= begin && m < end) combinations += c;
-      ring_valid[static_cast<std::size_t>(m & mask)] = 1;
-    }
-    for (int l = 0; l < levels; ++l) {
-      const Index q = m - l - 1;
-      if (q < start) break;
-      if (q >= stop) continue;
-      const int lambda = 2 + L.d % 2 + 2 * l;
-      double* self = ring.data() + (q & mask) * dim;
-      const bool has_next = q + 1 < stop;
-      const bool vnext = has_next && ring_valid[static_cast<std::size_t>((q + 1) & mask)];
-      const char vself = ring_valid[static_cast<std::size_t>(q & mask)];
-      const Action a = plan(L, L.first + q, lambda, saved_valid[static_cast<std::size_t>(l)], vself, vnext);
-      double*& prev = saved[static_cast<std::size_t>(l)];
-      for (Index c = 0; c < m_dim; ++c) tmp[c] = self[c];
-      if (a.kind != Action::marker) {
-        const int c = apply_raw<DIM>(a, self, prev, tmp, has_next ? ring.data() + ((q + 1) & mask) * dim : tmp, dim);
-        if (q >= begin && q < end) combinations += c;
-      }
-      std::swap(prev, tmp);  // the old value of position q is the next position's P^{λ-2}_{q-1}
-      saved_valid[static_cast<std::size_t>(l)] = vself;
-      ring_valid[static_cast<std::size_t>(q & mask)] = a.kind != Action::marker;
-    }
-    const Index f = m - levels;  // final now
-    if (f < begin || f >= end) continue;
-    const bool valid = ring_valid[static_cast<std::size_t>(f & mask)];
-    if (valid && first < 0) first = f;
-    const Index row = first < 0 ? -1 : f - first;
-    const bool inside = row >= 0 && row < expected;
-    if (valid != inside) {
-      throw NumericalError("refine_smooth: the control points surviving the end conditions are not " +
-                           std::to_string(expected) + " consecutive ones");
-    }
-    if (!valid) continue;
-    const double* src = ring.data() + (f & mask) * dim;
-    for (Index c = 0; c < m_dim; ++c) S.dst[row + c * expected] = src[c];
-    ++got;
-  }
-  return combinations;
-}
-
-// The whole sweep: the first positions serially (they contain the first surviving point), the rest in
-// chunks on the OpenMP threads when there are many positions.
-template <int DIM>
-void run_streaming(const Layout& L, const Input& in, Index expected, Eigen::MatrixXd& out, long long& count) {
-  Sweep S;
-  S.L = &L;
-  S.in = &in;
-  S.n = L.last - L.first + 1;
-  S.levels = L.d >= 2 + L.d % 2 ? (L.d - (2 + L.d % 2)) / 2 + 1 : 0;
-  S.expected = expected;
-  out.resize(expected, in.cp->cols());
-  S.dst = out.data();
-  constexpr Index chunk = Index{1} << 16;
-  const Index head = std::min(S.n, S.n > 4 * chunk ? chunk : S.n);
-  Index first = -1, got = 0;
-  long long combinations = sweep<DIM>(S, 0, head, first, got);
-  if (head < S.n) {
-    if (first < 0) throw NumericalError("refine_smooth: no control point survived the end conditions");
-    const Index chunks = (S.n - head + chunk - 1) / chunk;
-    std::exception_ptr error;
-#pragma omp parallel for schedule(static) reduction(+ : combinations, got)
-    for (Index c = 0; c < chunks; ++c) {
-      try {
-        Index f = first;
-        combinations += sweep<DIM>(S, head + c * chunk, std::min(S.n, head + (c + 1) * chunk), f, got);
-      } catch (...) {
-#pragma omp critical(iga_refine_smooth_error)
-        if (!error) error = std::current_exception();
-      }
-    }
-    if (error) std::rethrow_exception(error);
-  }
-  if (got != expected) {
-    throw NumericalError("refine_smooth: " + std::to_string(got) + " control points survived the end conditions, " +
-                         std::to_string(expected) + " expected");
-  }
-  count += combinations;
-}
-
 // Runs the algorithm; the surviving control points go to `out` (resized), the refined knots (paper convention)
 // to out_knots[offset..] (out_knots resized to offset + count + offset).
 void run(const Input& in, const std::vector<double>& new_knots, RefineSmoothVariant variant, long long& count,
@@ -413,39 +251,33 @@ void run(const Input& in, const std::vector<double>& new_knots, RefineSmoothVari
       throw InputError("refine_smooth: new knot " + std::to_string(x) + " is not in its interval [" +
                        std::to_string(a) + ", " + std::to_string(b) + "]");
     }
-    if (a < x && x < b) continue;  // a new knot strictly inside its interval is simple
-    // Multiplicity it creates: knots are sorted, only runs at the interval ends can equal x.
-    Index m = 1;
-    for (Index i = j; i >= 0 && in.t[i] == x; --i) ++m;
-    for (Index i = j + 1; i < k && in.t[i] == x; ++i) ++m;
-    if (m > d) throw InputError("refine_smooth: new knot " + std::to_string(x) + " would have multiplicity above the degree");
+  }
+  if (variant == RefineSmoothVariant::constant_memory) {
+    detail::NewKnots knots;
+    knots.per_interval = new_knots.data();
+    detail::refine_smooth_stream(d, in.t, k, *in.cp, knots, count, out, out_knots, offset);
+    return;
+  }
+  for (Index j = 0; j + 1 < k; ++j) {
+    const double x = new_knots[static_cast<std::size_t>(j)];
+    if (!std::isnan(x)) detail::check_new_knot(in.t, k, j, x, d);
   }
   const Layout L = make_layout(d, in.t, k, new_knots);
   // §7: the points left are the control points whose arguments reach into [u_a, u_b].
   const Index a = L.y[static_cast<std::size_t>(d - 1)], b = L.y[static_cast<std::size_t>(k - d)];
   const Index expected = b - a + d;
-  if (variant == RefineSmoothVariant::levels) {
-    std::vector<char> valid;
-    const RowMatrix P = run_levels(L, in, valid, count);
-    const Index n = P.rows();
-    Index first = 0;
-    while (first < n && !valid[static_cast<std::size_t>(first)]) ++first;
-    Index got = 0;
-    while (first + got < n && valid[static_cast<std::size_t>(first + got)]) ++got;
-    if (got != expected) {
-      throw NumericalError("refine_smooth: " + std::to_string(got) + " control points survived the end conditions, " +
-                           std::to_string(expected) + " expected");
-    }
-    out = P.middleRows(first, got);
-  } else {
-    switch (in.cp->cols()) {
-      case 1: run_streaming<1>(L, in, expected, out, count); break;
-      case 2: run_streaming<2>(L, in, expected, out, count); break;
-      case 3: run_streaming<3>(L, in, expected, out, count); break;
-      case 4: run_streaming<4>(L, in, expected, out, count); break;
-      default: run_streaming<0>(L, in, expected, out, count); break;
-    }
+  std::vector<char> valid;
+  const RowMatrix P = run_levels(L, in, valid, count);
+  const Index n = P.rows();
+  Index first = 0;
+  while (first < n && !valid[static_cast<std::size_t>(first)]) ++first;
+  Index got = 0;
+  while (first + got < n && valid[static_cast<std::size_t>(first + got)]) ++got;
+  if (got != expected) {
+    throw NumericalError("refine_smooth: " + std::to_string(got) + " control points survived the end conditions, " +
+                         std::to_string(expected) + " expected");
   }
+  out = P.middleRows(first, got);
   const auto nk = static_cast<std::size_t>(b + d - (a - d + 1));
   out_knots.resize(offset + nk + offset);
   std::copy(L.u.begin() + (a - d + 1), L.u.begin() + (b + d), out_knots.begin() + static_cast<std::ptrdiff_t>(offset));
@@ -465,19 +297,49 @@ RefineSmoothResult refine_smooth(const PolarSpline& s, const std::vector<double>
 SplineCurve refine_smooth(const SplineCurve& curve, const std::vector<double>& xs, RefineSmoothVariant variant,
                           long long* count) {
   validate(curve);
-  std::vector<double> rest = xs;
-  if (!std::is_sorted(rest.begin(), rest.end())) std::sort(rest.begin(), rest.end());
-  for (double x : rest) {
+  if (xs.empty()) return curve;
+  std::vector<double> rest;
+  const bool sorted = std::is_sorted(xs.begin(), xs.end());
+  if (!sorted) {
+    rest = xs;
+    std::sort(rest.begin(), rest.end());
+  }
+  const std::vector<double>& ordered = sorted ? xs : rest;
+  for (double x : ordered) {
     if (!std::isfinite(x) || x < curve.domain_begin() || x > curve.domain_end()) {
       throw InputError("knot " + std::to_string(x) + " to insert is outside the domain [" +
                        std::to_string(curve.domain_begin()) + ", " + std::to_string(curve.domain_end()) + "]");
     }
   }
+  const auto interval_empty = [](const SplineCurve& c, Index i) {
+    return c.knots[static_cast<std::size_t>(i)] == c.knots[static_cast<std::size_t>(i) + 1];
+  };
+  if (variant == RefineSmoothVariant::constant_memory) {
+    // One pass straight from the sorted knots when each has an interval of its own (no per-interval array).
+    // The paper's knots are the standard ones without the first and the last: interval mu is paper mu - 1.
+    Index last = curve.num_control_points() - 1;  // the last non-empty domain interval
+    while (interval_empty(curve, last)) --last;
+    detail::NewKnots knots;
+    knots.sorted = ordered.data();
+    knots.count = static_cast<Index>(ordered.size());
+    knots.first = curve.degree - 1;
+    knots.last = last - 1;
+    SplineCurve next;
+    next.degree = curve.degree;
+    long long combinations = 0;
+    if (detail::refine_smooth_stream(curve.degree, curve.knots.data() + 1, static_cast<Index>(curve.knots.size()) - 2,
+                                     curve.control_points, knots, combinations, next.control_points, next.knots, 1)) {
+      next.knots.front() = curve.knots.front();
+      next.knots.back() = curve.knots.back();
+      if (count) *count += combinations;
+      return next;
+    }
+  }
+  if (sorted) rest = xs;
   SplineCurve cur;
   const SplineCurve* from = &curve;  // the curve of the current pass (no copy for the first)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> per_interval, later;
-  if (rest.empty()) return curve;
   while (!rest.empty()) {
     const SplineCurve& cur_in = *from;
     // One pass: the first pending knot of every non-empty interval [t_mu, t_{mu+1}) (the last one closed).
@@ -487,7 +349,7 @@ SplineCurve refine_smooth(const SplineCurve& curve, const std::vector<double>& x
     per_interval.assign(m - 3, nan);
     later.clear();
     const auto& t = cur_in.knots;
-    auto empty = [&](Index i) { return t[static_cast<std::size_t>(i)] == t[static_cast<std::size_t>(i) + 1]; };
+    auto empty = [&](Index i) { return interval_empty(cur_in, i); };
     Index last = n - 1;  // the last non-empty domain interval (the domain is not empty: validate())
     while (empty(last)) --last;
     Index mu = cur_in.degree;  // the non-empty domain interval [t_mu, t_{mu+1}) holding x (the last one closed)

@@ -17,7 +17,8 @@ namespace iga::refine {
 
 enum class RefineSmoothVariant {
   levels,           ///< §3: each level P^λ computed from a separate copy of P^{λ-2}
-  constant_memory,  ///< §5: P^λ_i stored in the same place for every λ (one buffer, one saved point)
+  constant_memory,  ///< §5: P^λ_i stored in the same place for every λ (in place, one saved point), in blocks
+                    ///< of 1024 positions with O(block + d) working memory, on the OpenMP threads
 };
 
 struct RefineSmoothResult {
@@ -33,7 +34,8 @@ RefineSmoothResult refine_smooth(const PolarSpline& spline, const std::vector<do
 
 /// Standard convention: inserts the knots xs (inside the domain, any order). Each pass inserts at most one
 /// knot per non-empty interval (the one containing it); further knots in the same interval take further
-/// passes. The end knots are kept. `count` (optional) accumulates the affine combinations.
+/// passes. The end knots are kept. `count` (optional) accumulates the affine combinations. With the §5
+/// variant and sorted xs, one knot per interval, the single pass reads xs directly (no per-interval array).
 SplineCurve refine_smooth(const SplineCurve& curve, const std::vector<double>& xs,
                           RefineSmoothVariant variant = RefineSmoothVariant::levels, long long* count = nullptr);
 

@@ -3,6 +3,7 @@
 // variants (§3, §5), and the tensor-product prolongation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -233,8 +234,8 @@ TEST(RefineSmooth, RejectsMisplacedKnots) {
 }
 
 TEST(RefineSmooth, LongCurvesSweptInParallelChunks) {
-  // Beyond 4·2^16 positions the constant-memory variant sweeps chunks on the OpenMP threads (each chunk
-  // started levels + 1 positions early); the result must equal Boehm and the count the §3 variant's.
+  // Beyond 2^15 positions the constant-memory variant sweeps chunks of blocks on the OpenMP threads (each
+  // block started `levels` positions early); the result must equal Boehm and the count the §3 variant's.
   std::mt19937 rng(29);
   for (int d : {1, 2, 3, 4, 7}) {
     SplineCurve c = random_curve(rng, d, 150000, d % 2 ? 2 : 3);
@@ -251,11 +252,84 @@ TEST(RefineSmooth, LongCurvesSweptInParallelChunks) {
     const SplineCurve boehm = insert_knots_boehm(c, xs);
     const SplineCurve levels = refine_smooth(c, xs, RefineSmoothVariant::levels, &count_levels);
     const SplineCurve stream = refine_smooth(c, xs, RefineSmoothVariant::constant_memory, &count_stream);
-    ASSERT_GT(stream.num_control_points(), 4 * (1 << 16)) << "the parallel path must be reached";
+    ASSERT_GT(stream.num_control_points(), 4 * (1 << 15)) << "the parallel path must be reached";
     ASSERT_EQ(stream.knots, boehm.knots);
     EXPECT_LE(rel_diff(stream.control_points, boehm.control_points), 1e-12) << "degree " << d;
     EXPECT_LE(rel_diff(stream.control_points, levels.control_points), 1e-14) << "degree " << d;
     EXPECT_EQ(count_stream, count_levels) << "degree " << d;
+  }
+}
+
+namespace {
+// Knots to insert into c: in a random subset of the non-empty domain intervals a knot strictly inside, at the
+// interval's left knot (where its multiplicity stays <= d) or at the domain end, sometimes a second one in
+// the same interval (a second pass).
+std::vector<double> mixed_knots(std::mt19937& rng, const SplineCurve& c) {
+  std::uniform_real_distribution<double> frac(0.05, 0.95), coin(0.0, 1.0);
+  auto multiplicity = [&](double x) { return std::count(c.knots.begin(), c.knots.end(), x); };
+  std::vector<double> xs;
+  for (Index mu : domain_intervals(c)) {
+    const double a = c.knots[static_cast<std::size_t>(mu)], b = c.knots[static_cast<std::size_t>(mu) + 1];
+    const double r = coin(rng);
+    if (r < 0.2) continue;
+    if (r < 0.35 && multiplicity(a) < c.degree) {
+      xs.push_back(a);
+    } else if (r < 0.4 && b == c.domain_end() && multiplicity(b) < c.degree) {
+      xs.push_back(b);
+    } else {
+      xs.push_back(a + frac(rng) * (b - a));
+    }
+    if (coin(rng) < 0.05) xs.push_back(a + frac(rng) * (b - a));
+  }
+  return xs;
+}
+
+// The same curve with unclamped ends (the domain ends become simple knots).
+SplineCurve unclamped(SplineCurve c) {
+  const auto p = static_cast<std::size_t>(c.degree), m = c.knots.size();
+  for (std::size_t i = 0; i < p; ++i) {
+    c.knots[i] = c.knots[p] - 0.7 * static_cast<double>(p - i);
+    c.knots[m - 1 - i] = c.knots[m - 1 - p] + 0.7 * static_cast<double>(p - i);
+  }
+  return c;
+}
+}  // namespace
+
+TEST(RefineSmooth, ConstantMemoryVariantTakesEveryPath) {
+  // The §5 variant reads sorted knots directly when each has an interval of its own, and otherwise goes
+  // pass by pass through the per-interval form: knots at existing knots and at the domain end (the last
+  // interval is closed), two knots in one interval, unsorted input, clamped and unclamped ends, short
+  // curves (every block meets the end conditions) and long ones (blocks away from the ends on both threads).
+  std::mt19937 rng(41);
+  for (int d = 1; d <= 9; ++d) {
+    for (int trial = 0; trial < 12; ++trial) {
+      const int breaks = trial < 10 ? 1 + 3 * trial : 20000;
+      SplineCurve c = random_curve(rng, d, breaks, 1 + trial % 4);
+      if (trial % 2) c = unclamped(c);
+      std::vector<double> xs = mixed_knots(rng, c);
+      long long count_levels = 0, count_stream = 0;
+      const SplineCurve levels = refine_smooth(c, xs, RefineSmoothVariant::levels, &count_levels);
+      std::shuffle(xs.begin(), xs.end(), rng);
+      const SplineCurve stream = refine_smooth(c, xs, RefineSmoothVariant::constant_memory, &count_stream);
+      const SplineCurve boehm = insert_knots_boehm(c, xs);
+      ASSERT_EQ(stream.knots, boehm.knots) << "degree " << d << " trial " << trial;
+      EXPECT_LE(rel_diff(stream.control_points, boehm.control_points), 1e-12) << "degree " << d << " trial " << trial;
+      EXPECT_LE(rel_diff(stream.control_points, levels.control_points), 1e-14) << "degree " << d << " trial " << trial;
+      EXPECT_EQ(count_stream, count_levels) << "degree " << d << " trial " << trial;
+    }
+  }
+}
+
+TEST(RefineSmooth, RejectsAKnotOfTooHighMultiplicity) {
+  // Degree 2, knot 1 already double: a third copy is above the degree, in either variant and either form.
+  SplineCurve c;
+  c.degree = 2;
+  c.knots = {0, 0, 0, 1, 1, 2, 2, 2};
+  c.control_points = Eigen::MatrixXd::Zero(5, 2);
+  for (RefineSmoothVariant v : variants) {
+    EXPECT_THROW(refine_smooth(c, {0.5, 1.0, 1.5}, v), InputError);
+    EXPECT_NO_THROW(refine_smooth(c, {0.5, 1.5}, v));
+    EXPECT_THROW(refine_smooth(c, {2.5}, v), InputError);  // outside the domain
   }
 }
 
