@@ -299,12 +299,13 @@ TEST(RefineSmooth, ConstantMemoryVariantTakesEveryPath) {
   // The §5 variant reads sorted knots directly when each has an interval of its own, and otherwise goes
   // pass by pass through the per-interval form: knots at existing knots and at the domain end (the last
   // interval is closed), two knots in one interval, unsorted input, clamped and unclamped ends, short
-  // curves (every block meets the end conditions) and long ones (blocks away from the ends on both threads).
+  // curves (every block meets the end conditions) and long ones (blocks away from the ends on both threads),
+  // 1 to 7 coordinates (compile-time dimensions up to 4, run-time beyond).
   std::mt19937 rng(41);
   for (int d = 1; d <= 9; ++d) {
     for (int trial = 0; trial < 12; ++trial) {
       const int breaks = trial < 10 ? 1 + 3 * trial : 20000;
-      SplineCurve c = random_curve(rng, d, breaks, 1 + trial % 4);
+      SplineCurve c = random_curve(rng, d, breaks, 1 + (5 * trial) % 7);
       if (trial % 2) c = unclamped(c);
       std::vector<double> xs = mixed_knots(rng, c);
       long long count_levels = 0, count_stream = 0;
