@@ -1,11 +1,15 @@
 // bench-knots: control points refined per second by Boehm's insertion (one backward sweep), the Oslo
 // algorithm and the refine-and-smooth algorithm (both variants; the §5 blocked in-place variant on one thread and on
 // all threads), one new knot in every interval of a uniform clamped degree-d curve in 3D. Median of --repeat
-// runs, each with freshly allocated output (as a caller gets it). JSON on stdout (and --json FILE).
+// runs, each with freshly mapped output memory (as a caller gets it; see --memory for the arithmetic alone).
+// JSON on stdout (and --json FILE).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <iostream>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <nlohmann/json.hpp>
 #include <random>
 #include <vector>
@@ -19,20 +23,31 @@ int main(int argc, char** argv) {
   CLI::App app{"bench-knots: knot insertion speed, Boehm vs Oslo vs refine-and-smooth"};
   long points = 1000000;
   int min_degree = 2, max_degree = 7, repeat = 5, threads = 0;
-  std::string json;
+  std::string json, memory = "fresh";
   app.add_option("--points", points, "control points of the curve")->capture_default_str();
   app.add_option("--min-degree", min_degree)->capture_default_str();
   app.add_option("--max-degree", max_degree)->capture_default_str();
   app.add_option("--repeat", repeat, "runs per measurement (the median counts)")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--threads", threads, "threads for the parallel §5 variant (0: OpenMP default)")->check(CLI::NonNegativeNumber);
+  app.add_option("--memory", memory,
+                 "fresh: every allocation of 1 MiB or more on newly mapped pages (as a caller gets it); "
+                 "process: the allocator as configured (with GLIBC_TUNABLES keeping freed memory: the "
+                 "arithmetic alone)")
+      ->check(CLI::IsMember({"fresh", "process"}))
+      ->capture_default_str();
   app.add_option("--json", json, "write the report here too");
   CLI11_PARSE(app, argc, argv);
+#ifdef __GLIBC__
+  // A fixed threshold (glibc adapts it to freed sizes otherwise, so whether an output faults in fresh pages
+  // would depend on what the process freed before).
+  if (memory == "fresh") mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
   try {
     using namespace iga;
     if (threads > 0) fem::set_num_threads(threads);
     const int all_threads = fem::num_threads();
     nlohmann::json report = {{"program", "bench-knots"}, {"control_points", points}, {"repeat", repeat},
-                             {"threads", all_threads}};
+                             {"threads", all_threads}, {"memory", memory}};
     std::mt19937 rng(1);
     std::uniform_real_distribution<double> coord(-1.0, 1.0);
     for (int d = min_degree; d <= max_degree; ++d) {

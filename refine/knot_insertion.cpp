@@ -53,6 +53,32 @@ void check_inside(const SplineCurve& c, double x) {
   }
 }
 
+// xs itself if sorted, else a sorted copy in `storage`.
+const std::vector<double>& sorted(const std::vector<double>& xs, std::vector<double>& storage) {
+  if (std::is_sorted(xs.begin(), xs.end())) return xs;
+  storage = xs;
+  std::sort(storage.begin(), storage.end());
+  return storage;
+}
+
+// InputError if inserting the sorted knots xs would give a knot a multiplicity above degree + 1 (one walk
+// over the knots and xs together).
+void check_multiplicities(const SplineCurve& c, const std::vector<double>& xs) {
+  const auto& t = c.knots;
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < xs.size();) {
+    const double x = xs[i];
+    std::size_t run = 0;
+    while (i < xs.size() && xs[i] == x) ++i, ++run;
+    while (j < t.size() && t[j] < x) ++j;
+    for (std::size_t e = j; e < t.size() && t[e] == x; ++e) ++run;
+    if (run > static_cast<std::size_t>(c.degree) + 1) {
+      throw InputError("knot " + num(x) + " would have multiplicity " + std::to_string(run) + ", above degree + 1 = " +
+                       std::to_string(c.degree + 1));
+    }
+  }
+}
+
 }  // namespace
 
 void validate(const SplineCurve& c) {
@@ -116,6 +142,7 @@ std::vector<double> interval_midpoints(const SplineCurve& c, const std::vector<I
 SplineCurve insert_knot_boehm(const SplineCurve& c, double x) {
   validate(c);
   check_inside(c, x);
+  check_multiplicities(c, {x});
   const int p = c.degree;
   const Index n = c.num_control_points();
   const Index k = find_span(c, x);
@@ -141,8 +168,9 @@ SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& 
   validate(c);
   if (xs_in.empty()) return c;
   for (double x : xs_in) check_inside(c, x);
-  std::vector<double> xs = xs_in;
-  if (!std::is_sorted(xs.begin(), xs.end())) std::sort(xs.begin(), xs.end());
+  std::vector<double> storage;
+  const std::vector<double>& xs = sorted(xs_in, storage);
+  check_multiplicities(c, xs);
   const int p = c.degree;
   const auto& t = c.knots;
   const Index n = c.num_control_points();  // control points 0..n-1, knots 0..n+p
@@ -188,6 +216,8 @@ SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& 
 SplineCurve insert_knots_oslo(const SplineCurve& c, const std::vector<double>& xs) {
   validate(c);
   for (double x : xs) check_inside(c, x);
+  std::vector<double> storage;
+  check_multiplicities(c, sorted(xs, storage));
   const int p = c.degree;
   SplineCurve out;
   out.degree = p;

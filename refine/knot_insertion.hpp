@@ -35,7 +35,8 @@ std::vector<Index> domain_intervals(const SplineCurve& curve);
 std::vector<double> interval_midpoints(const SplineCurve& curve, const std::vector<Index>& intervals);
 
 /// Knot insertion (every function below, and refine_smooth on a SplineCurve) first checks the curve with
-/// validate() and that each knot to insert lies in the domain: InputError otherwise.
+/// validate(), that each knot to insert lies in the domain and that no knot gets a multiplicity above
+/// degree + 1 (refine_smooth: above degree, the algorithm's limit): InputError otherwise.
 ///
 /// Boehm: inserts x (inside the domain) once. The interval used is the non-empty one containing x.
 SplineCurve insert_knot_boehm(const SplineCurve& curve, double x);

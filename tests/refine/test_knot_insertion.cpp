@@ -71,4 +71,14 @@ TEST(KnotInsertion, ValidationNamesTheProblem) {
   bad.control_points(1, 1) = std::nan("");
   EXPECT_THROW(validate(bad), InputError);
   EXPECT_THROW(insert_knot_boehm(c, 2.0), InputError);
+  // Multiplicity above degree + 1: at the clamped ends at once, inside after three copies (one is fine, a
+  // triple knot 0.5 has multiplicity 3 = degree + 1).
+  EXPECT_THROW(insert_knot_boehm(c, 1.0), InputError);
+  EXPECT_THROW(insert_knots_boehm(c, {0.5, 0.0}), InputError);
+  EXPECT_THROW(insert_knots_oslo(c, {1.0}), InputError);
+  EXPECT_NO_THROW(insert_knots_boehm(c, {0.5, 0.5, 0.5}));
+  EXPECT_NO_THROW(insert_knots_oslo(c, {0.5, 0.5, 0.5}));
+  EXPECT_THROW(insert_knots_boehm(c, {0.5, 0.5, 0.5, 0.5}), InputError);
+  EXPECT_THROW(insert_knots_oslo(c, {0.5, 0.5, 0.5, 0.5}), InputError);
+  EXPECT_THROW(insert_knots_boehm(bad, {0.5}), InputError);  // the curve itself is checked
 }
