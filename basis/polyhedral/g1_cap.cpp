@@ -129,14 +129,15 @@ void G1CapSystem::join_g1(const CapEdge& q, const CapEdge& p, const EdgeFunction
   }
 }
 
-CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairness fairness) const {
-  const auto start = std::chrono::steady_clock::now();
-  const int unknowns = cap_patches_ * kCapCoefficients;
-  const int m = static_cast<int>(rows_.size());
-  Eigen::MatrixXd a(m, unknowns), b(m, gathered_);
+CapDerivation solve_cap_constraints(const std::vector<Eigen::RowVectorXd>& rows, int patches, int degree_u,
+                                    int degree_v, int gathered, Fairness fairness, const std::string& what) {
+  const int coefficients = (degree_u + 1) * (degree_v + 1);
+  const int unknowns = patches * coefficients;
+  const int m = static_cast<int>(rows.size());
+  Eigen::MatrixXd a(m, unknowns), b(m, gathered);
   for (int r = 0; r < m; ++r) {
-    a.row(r) = rows_[static_cast<std::size_t>(r)].head(unknowns);
-    b.row(r) = -rows_[static_cast<std::size_t>(r)].tail(gathered_);
+    a.row(r) = rows[static_cast<std::size_t>(r)].head(unknowns);
+    b.row(r) = -rows[static_cast<std::size_t>(r)].tail(gathered);
   }
 
   // rank A and rank [A | B] (both from singular values, relative threshold)
@@ -145,16 +146,14 @@ CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairn
   const double threshold = kRankTolerance * (sigma.size() > 0 ? sigma(0) : 1.0);
   int rank = 0;
   while (rank < sigma.size() && sigma(rank) > threshold) ++rank;
-  Eigen::MatrixXd ab(m, unknowns + gathered_);
+  Eigen::MatrixXd ab(m, unknowns + gathered);
   ab << a, b;
   const Eigen::VectorXd sigma_ab = Eigen::BDCSVD<Eigen::MatrixXd>(ab).singularValues();
   const double threshold_ab = kRankTolerance * (sigma_ab.size() > 0 ? sigma_ab(0) : 1.0);
   int rank_ab = 0;
   while (rank_ab < sigma_ab.size() && sigma_ab(rank_ab) > threshold_ab) ++rank_ab;
   if (rank_ab != rank)
-    throw std::runtime_error("G1CapSystem: inconsistent constraints for configuration " +
-                             std::to_string(static_cast<int>(configuration)) +
-                             ", n = " + std::to_string(valence) + " (rank A = " + std::to_string(rank) +
+    throw std::runtime_error(what + ": inconsistent constraints (rank A = " + std::to_string(rank) +
                              ", rank [A|B] = " + std::to_string(rank_ab) + ")");
 
   // particular (least-norm) solution and null space of A
@@ -163,23 +162,21 @@ CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairn
   // is more accurate here than BDCSVD's U, whose errors reached 1e-11 in A x_p − B for n = 7)
   const Eigen::MatrixXd v_r = v.leftCols(rank);
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a * v_r);
-  Eigen::MatrixXd x_p = v_r * qr.solve(b);
-  x_p += v_r * qr.solve(b - a * x_p);  // one step of iterative refinement
+  Eigen::MatrixXd x = v_r * qr.solve(b);
+  x += v_r * qr.solve(b - a * x);  // one step of iterative refinement
   const Eigen::MatrixXd null = v.rightCols(unknowns - rank);
 
   // fairness: minimise (x_p + N z)ᵀ H (x_p + N z) over z
-  const Eigen::MatrixXd h_patch = fairness_gram(fairness, kCapDegree, kCapDegree);
-  Eigen::MatrixXd x = x_p;
   if (null.cols() > 0) {
-    Eigen::MatrixXd hn(unknowns, null.cols()), hx(unknowns, gathered_);
-    for (int k = 0; k < cap_patches_; ++k) {
-      const int o = k * kCapCoefficients;
-      hn.middleRows(o, kCapCoefficients) = h_patch * null.middleRows(o, kCapCoefficients);
-      hx.middleRows(o, kCapCoefficients) = h_patch * x_p.middleRows(o, kCapCoefficients);
+    const Eigen::MatrixXd h_patch = fairness_gram(fairness, degree_u, degree_v);
+    Eigen::MatrixXd hn(unknowns, null.cols()), hx(unknowns, gathered);
+    for (int k = 0; k < patches; ++k) {
+      const int o = k * coefficients;
+      hn.middleRows(o, coefficients) = h_patch * null.middleRows(o, coefficients);
+      hx.middleRows(o, coefficients) = h_patch * x.middleRows(o, coefficients);
     }
     const Eigen::MatrixXd reduced = null.transpose() * hn;
-    const Eigen::MatrixXd z = reduced.ldlt().solve(-(null.transpose() * hx));
-    x = x_p + null * z;
+    x += null * reduced.ldlt().solve(-(null.transpose() * hx));
   }
 
   CapDerivation d;
@@ -189,12 +186,20 @@ CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairn
   d.rank_augmented = rank_ab;
   d.null_dimension = unknowns - rank;
   d.constraint_residual = m > 0 ? (a * x - b).cwiseAbs().maxCoeff() : 0.0;
+  d.mask.gathered = gathered;
+  for (int k = 0; k < patches; ++k)
+    d.mask.patches.push_back(PatchMask{degree_u, degree_v, x.middleRows(k * coefficients, coefficients)});
+  return d;
+}
+
+CapDerivation G1CapSystem::solve(Configuration configuration, int valence, Fairness fairness) const {
+  const auto start = std::chrono::steady_clock::now();
+  CapDerivation d = solve_cap_constraints(rows_, cap_patches_, kCapDegree, kCapDegree, gathered_, fairness,
+                                          "G1CapSystem, configuration " +
+                                              std::to_string(static_cast<int>(configuration)) +
+                                              ", n = " + std::to_string(valence));
   d.mask.configuration = configuration;
   d.mask.valence = valence;
-  d.mask.gathered = gathered_;
-  for (int k = 0; k < cap_patches_; ++k)
-    d.mask.patches.push_back(
-        PatchMask{kCapDegree, kCapDegree, x.middleRows(k * kCapCoefficients, kCapCoefficients)});
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }

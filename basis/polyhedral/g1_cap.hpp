@@ -12,6 +12,7 @@
 // particular configuration (star_cap.cpp, ngon_cap.cpp set the systems up).
 #include <functional>
 #include <utility>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -113,6 +114,13 @@ class SectorCapSystem {
   bool split_;
   G1CapSystem system_;
 };
+
+/// The constrained least-squares solve every cap shares: rows [A | −B] over `patches` patches of degree
+/// (degree_u, degree_v) followed by `gathered` known columns; A X = B with rank A = rank [A|B] checked
+/// (std::runtime_error naming `what` otherwise), X = particular solution + the null-space part minimising the
+/// fairness functional. Fills everything of CapDerivation but configuration, valence and seconds.
+CapDerivation solve_cap_constraints(const std::vector<Eigen::RowVectorXd>& rows, int patches, int degree_u,
+                                    int degree_v, int gathered, Fairness fairness, const std::string& what);
 
 /// Bernstein polynomial B^d_i(t) and its k-th derivative (private helpers, exposed for the cap builders).
 double bernstein(int degree, int i, double t);

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include <Eigen/Dense>
-#include <Eigen/SVD>
 
 namespace iga::basis::polyhedral {
 namespace {
@@ -21,7 +20,6 @@ constexpr int kDegreeU = 3;  // radial
 constexpr int kDegreeV = 2;  // circular
 constexpr int kCoefficients = (kDegreeU + 1) * (kDegreeV + 1);
 /// Relative singular-value threshold of the rank decisions (as g1_cap.cpp).
-constexpr double kRankTolerance = 1e-10;
 
 void check_valence(int n) {
   if (n < 3 || n > 8) throw std::invalid_argument("polar cap: valence " + std::to_string(n) + " is not in 3..8");
@@ -123,65 +121,15 @@ PolarSystem constraints(int n) {
   return s;
 }
 
-CapDerivation solve(int n, const PolarSystem& s, Fairness fairness) {
-  const int unknowns = s.unknowns(), gathered = n + 1;
-  const int m = static_cast<int>(s.rows().size());
-  Eigen::MatrixXd a(m, unknowns), b(m, gathered);
-  for (int r = 0; r < m; ++r) {
-    a.row(r) = s.rows()[static_cast<std::size_t>(r)].head(unknowns);
-    b.row(r) = -s.rows()[static_cast<std::size_t>(r)].tail(gathered);
-  }
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
-  const Eigen::VectorXd& sigma = svd.singularValues();
-  int rank = 0;
-  while (rank < sigma.size() && sigma(rank) > kRankTolerance * sigma(0)) ++rank;
-  Eigen::MatrixXd ab(m, unknowns + gathered);
-  ab << a, b;
-  const Eigen::VectorXd sigma_ab = Eigen::JacobiSVD<Eigen::MatrixXd>(ab).singularValues();
-  int rank_ab = 0;
-  while (rank_ab < sigma_ab.size() && sigma_ab(rank_ab) > kRankTolerance * sigma_ab(0)) ++rank_ab;
-  if (rank_ab != rank)
-    throw std::runtime_error("polar cap, n = " + std::to_string(n) + ": inconsistent constraints (rank A = " +
-                             std::to_string(rank) + ", rank [A|B] = " + std::to_string(rank_ab) + ")");
-
-  const Eigen::MatrixXd v_r = svd.matrixV().leftCols(rank);
-  const Eigen::MatrixXd null = svd.matrixV().rightCols(unknowns - rank);
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a * v_r);
-  Eigen::MatrixXd x = v_r * qr.solve(b);
-  x += v_r * qr.solve(b - a * x);  // one step of iterative refinement
-  if (null.cols() > 0) {
-    const Eigen::MatrixXd h = fairness_gram(fairness, kDegreeU, kDegreeV);
-    Eigen::MatrixXd hn(unknowns, null.cols()), hx(unknowns, gathered);
-    for (int k = 0; k < n; ++k) {
-      const int o = k * kCoefficients;
-      hn.middleRows(o, kCoefficients) = h * null.middleRows(o, kCoefficients);
-      hx.middleRows(o, kCoefficients) = h * x.middleRows(o, kCoefficients);
-    }
-    const Eigen::MatrixXd reduced = null.transpose() * hn;
-    x += null * reduced.ldlt().solve(-(null.transpose() * hx));
-  }
-
-  CapDerivation d;
-  d.unknowns = unknowns;
-  d.equations = m;
-  d.rank = rank;
-  d.rank_augmented = rank_ab;
-  d.null_dimension = unknowns - rank;
-  d.constraint_residual = m > 0 ? (a * x - b).cwiseAbs().maxCoeff() : 0.0;
-  d.mask.configuration = Configuration::Polar;
-  d.mask.valence = n;
-  d.mask.gathered = gathered;
-  for (int k = 0; k < n; ++k)
-    d.mask.patches.push_back(PatchMask{kDegreeU, kDegreeV, x.middleRows(k * kCoefficients, kCoefficients)});
-  return d;
-}
-
 }  // namespace
 
 CapDerivation derive_polar_cap(int n, Fairness fairness) {
   check_valence(n);
   const auto start = std::chrono::steady_clock::now();
-  CapDerivation d = solve(n, constraints(n), fairness);
+  CapDerivation d = solve_cap_constraints(constraints(n).rows(), n, kDegreeU, kDegreeV, n + 1, fairness,
+                                          "polar cap, n = " + std::to_string(n));
+  d.mask.configuration = Configuration::Polar;
+  d.mask.valence = n;
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }
