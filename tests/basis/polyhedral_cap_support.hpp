@@ -104,6 +104,27 @@ inline Jet sector_jet(const std::vector<MatrixXd>& cap, int n, int k, double u, 
   return j;
 }
 
+/// Largest distance between the surfaces of two masks over ten random nets (random_net(n, 1000 n + seed),
+/// seed 1..10, with member `points`) on a 13 × 13 grid of each of the n sectors, relative to each net's
+/// bounding-box diagonal. point(applied patches, k, u, v): the surface point of sector k.
+template <class RandomNet, class Point>
+double relative_surface_distance(const ConfigurationMask& first, const ConfigurationMask& second, int n,
+                                 RandomNet random_net, Point point) {
+  double worst = 0.0;
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    const auto net = random_net(n, 1000 * static_cast<unsigned>(n) + seed);
+    const double diagonal = (net.points.colwise().maxCoeff() - net.points.colwise().minCoeff()).norm();
+    const auto a = apply(first, net.points), b = apply(second, net.points);
+    double d = 0.0;
+    for (int k = 0; k < n; ++k)
+      for (int i = 0; i <= 12; ++i)
+        for (int j = 0; j <= 12; ++j)
+          d = std::max(d, (point(a, k, i / 12.0, j / 12.0) - point(b, k, i / 12.0, j / 12.0)).norm());
+    worst = std::max(worst, d / diagonal);
+  }
+  return worst;
+}
+
 inline std::filesystem::path reference_tables() {
   return std::filesystem::path(IGA_SOURCE_DIR "/../shared/reference/polyhedral") / "src" / "Patch" / "Table";
 }

@@ -275,20 +275,8 @@ TEST(PolyhedralNGon, CloseToTheReferenceSurfaces) {
     ConfigurationMask ref;
     ref.gathered = 4 * n;
     for (const auto& c : ngon_reference_in_our_layout(n)) ref.patches.push_back({3, 3, c});
-    double worst = 0.0;
-    for (unsigned seed = 1; seed <= 10; ++seed) {
-      const Net net = random_net(n, 1000 * n + seed);
-      const double diagonal = (net.points.colwise().maxCoeff() - net.points.colwise().minCoeff()).norm();
-      const auto a = apply(ours, net.points), b = apply(ref, net.points);
-      double d = 0.0;
-      for (int k = 0; k < n; ++k)
-        for (int i = 0; i <= 12; ++i)
-          for (int j = 0; j <= 12; ++j)
-            d = std::max(
-                d, (sector_jet(a, n, k, i / 12.0, j / 12.0).x - sector_jet(b, n, k, i / 12.0, j / 12.0).x)
-                       .norm());
-      worst = std::max(worst, d / diagonal);
-    }
+    const auto point = [n](const auto& p, int k, double u, double v) { return sector_jet(p, n, k, u, v).x; };
+    const double worst = relative_surface_distance(ours, ref, n, random_net, point);
     std::cout << "[ngon n=" << n << "] max distance to the reference surface / bounding-box diagonal "
               << "(10 random one-rings): " << worst << "\n";
     EXPECT_LT(worst, 2e-2) << "n = " << n;
