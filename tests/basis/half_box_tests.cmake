@@ -1,0 +1,1 @@
+# Tests of the half-box spline backend (registered with iga_add_test).
