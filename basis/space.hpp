@@ -11,19 +11,24 @@
 
 namespace iga::basis {
 
-/// One side of an element that lies on the boundary of the domain.
-/// Sides of the unit square, traversed counter-clockwise with parameter t in [0,1]:
-///   0: (t, 0)   1: (1, t)   2: (1 - t, 1)   3: (0, 1 - t).
-/// `part` is the index of the boundary part (a name in Space::boundary_part_names()).
+/// One side of an element that lies on the boundary of the domain; sides as in side_point() for the element's
+/// shape. `part` is the index of the boundary part (a name in Space::boundary_part_names()).
 struct BoundaryEdge {
   Index element = 0;
   int side = 0;
   int part = 0;
 };
 
-/// Reference-domain point of side `side` at parameter t, and d(u,v)/dt (counter-clockwise).
-Eigen::Vector2d side_point(int side, double t);
-Eigen::Vector2d side_tangent(int side);
+/// Number of sides of a reference element: 4 for the unit square, 3 for the unit triangle.
+int num_sides(Shape shape);
+/// Reference-domain point of side `side` at parameter t in [0,1], and d(u,v)/dt; sides are traversed
+/// counter-clockwise. Unit square [0,1]²:
+///   0: (t, 0)   1: (1, t)   2: (1 - t, 1)   3: (0, 1 - t).
+/// Unit triangle {u, v >= 0, u + v <= 1} with corners (0,0), (1,0), (0,1):
+///   0: (t, 0)   1: (1 - t, t)   2: (0, 1 - t).
+/// InputError naming the side and shape when side is not 0..num_sides(shape) - 1.
+Eigen::Vector2d side_point(Shape shape, int side, double t);
+Eigen::Vector2d side_tangent(Shape shape, int side);
 
 class Space {
  public:

@@ -4,14 +4,12 @@
 #include <chrono>
 #include <iomanip>
 #include <iostream>
-#include <map>
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
-#include "basis/bspline/patches.hpp"
-#include "basis/catmull_clark/space.hpp"
-#include "basis/polyhedral/configuration.hpp"
-#include "basis/polyhedral/space.hpp"
+#include "basis/registry.hpp"
 #include "core/error.hpp"
 #include "fem/expression.hpp"
 #include "fem/poisson.hpp"
@@ -32,6 +30,8 @@ struct Options {
   int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
   double reaction = 0.0;
   bool quiet = false, mean_zero = false;
+  std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
+  bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
 
 std::vector<int> parse_parts(const std::string& list, const std::vector<std::string>& names) {
@@ -54,6 +54,23 @@ std::vector<int> parse_parts(const std::string& list, const std::vector<std::str
   return parts;
 }
 
+std::vector<iga::Index> parse_intervals(const std::string& list) {
+  std::vector<iga::Index> intervals;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t used = 0;
+      const long v = std::stol(item, &used);
+      if (used != item.size() || v < 0) throw std::invalid_argument(item);
+      intervals.push_back(v);
+    } catch (const std::exception&) {
+      throw iga::InputError("--refine-intervals: '" + item + "' is not a 0-based interval index");
+    }
+  }
+  return intervals;
+}
+
 int run(const Options& o) {
   using namespace iga;
   const auto t_start = std::chrono::steady_clock::now();
@@ -61,62 +78,26 @@ int run(const Options& o) {
     if (!o.quiet) std::cerr << "iga-poisson: " << s << std::endl;
   };
   if (o.threads > 0) fem::set_num_threads(o.threads);
-  if (o.basis != "bspline" && o.basis != "cc" && o.basis != "polyhedral") {
-    throw UnsupportedError("--basis " + o.basis + ": not available in this build (available: bspline, cc, polyhedral)");
-  }
-  if (o.presubdivide > 0 && o.basis != "polyhedral") throw InputError("--presubdivide is for --basis polyhedral");
-  // Geometry: for bspline a quad-grid control net from an OBJ file or the embedded quarter annulus; for cc
-  // any control net.
-  int global_steps = 0;
-  const int refine_steps = o.refine >= 0 ? o.refine : (o.basis == "cc" ? 1 : o.basis == "polyhedral" ? 0 : 4);
-  int net_steps = 0;  // polyhedral: Catmull–Clark steps of the net (--presubdivide + --refine)
-  auto make_coarse = [&]() -> basis::Geometry {
-    if (o.basis == "polyhedral") {
-      // The spaces of refined nets are not nested (no prolongation): the net itself is refined.
-      if (o.mesh.empty()) throw InputError("--basis polyhedral needs --mesh (a polyhedral control net)");
-      net_steps = o.presubdivide + refine_steps;
-      mesh::PolyMesh net = mesh::read_obj(o.mesh);
-      if (net_steps > 0) net = basis::polyhedral::presubdivide(net, net_steps);
-      try {
-        return basis::polyhedral::make_polyhedral_geometry(net);
-      } catch (const basis::polyhedral::UnsupportedConfigurationError& e) {
-        throw InputError(o.mesh, 0, e.what());
-      }
-    }
-    if (o.basis == "cc") {
-      if (o.mesh.empty()) throw InputError("--basis cc needs --mesh (a control net, e.g. data/meshes/square_evs.obj)");
-      basis::Geometry g = basis::catmull_clark::make_catmull_clark_geometry(mesh::read_obj(o.mesh), o.mesh);
-      global_steps = dynamic_cast<const basis::catmull_clark::CatmullClarkSpace&>(g.space()).refinement_steps();
-      if (global_steps > 0) {
-        log("the net has non-quad faces or faces touching several extraordinary vertices: applied " +
-            std::to_string(global_steps) + " global Catmull–Clark step(s) first");
-      }
-      return g;
-    }
-    return o.mesh.empty() ? basis::bspline::make_quarter_annulus(o.degree)
-                          : basis::bspline::geometry_from_quad_grid(mesh::read_obj(o.mesh), o.degree, o.mesh);
-  };
-  const basis::Geometry coarse = make_coarse();
+  // The backend from the registry: its options, defaults and construction (no backend policy here).
+  const basis::Backend& backend = basis::backend(o.basis);
+  basis::check_options(backend, o.given);
+  basis::BackendOptions bo;
+  if (o.count("degree")) bo.degree = o.degree;
+  if (o.count("presubdivide")) bo.presubdivide = o.presubdivide;
+  bo.net_name = o.mesh;
+  const int degree = basis::degree(backend, bo);
+  const int refine_steps = o.refine >= 0 ? o.refine : backend.default_refine;
+  basis::BackendFacts facts;
+  std::optional<mesh::PolyMesh> net;
+  if (!o.mesh.empty()) net = mesh::read_obj(o.mesh);
+  // --refine-intervals: each step halves only the listed knot intervals, in both directions (refine-and-smooth).
+  const std::vector<Index> intervals = parse_intervals(o.refine_intervals);
   refine::Refinement refined =
-      refine::refine_uniform(coarse, o.refine_intervals.empty() && o.basis != "polyhedral" ? refine_steps : 0);
-  if (!o.refine_intervals.empty()) {
-    // Each step halves only the listed knot intervals, in both directions (refine-and-smooth).
-    if (o.basis != "bspline") throw InputError("--refine-intervals is for --basis bspline");
-    std::vector<Index> intervals;
-    std::stringstream ss(o.refine_intervals);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-      try {
-        std::size_t used = 0;
-        const long v = std::stol(item, &used);
-        if (used != item.size() || v < 0) throw std::invalid_argument(item);
-        intervals.push_back(v);
-      } catch (const std::exception&) {
-        throw InputError("--refine-intervals: '" + item + "' is not a 0-based interval index");
-      }
-    }
-    for (int s = 0; s < refine_steps; ++s) refined = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
+      basis::make_refined_geometry(backend, net ? &*net : nullptr, bo, intervals.empty() ? refine_steps : 0, facts);
+  for (int s = 0; !intervals.empty() && s < refine_steps; ++s) {
+    refined = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
   }
+  for (const std::string& note : facts.notes) log(note);
   const basis::Geometry& geometry = refined.geometry;
   const bool surface = geometry.dim() == 3;
   const auto names = geometry.space().boundary_part_names();
@@ -156,8 +137,7 @@ int run(const Options& o) {
     problem.neumann_where = std::make_shared<fem::Expression>(o.neumann_where, "--neumann-where");
   }
   problem.mean_zero = o.mean_zero;
-  const int qp = o.basis == "cc" || o.basis == "polyhedral" ? 4 : o.degree + 1;
-  const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? "gauss:" + std::to_string(qp) : o.quadrature, qp);
+  const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? backend.default_quadrature(degree) : o.quadrature, degree + 1);
   const fem::SolverOptions solver{fem::parse_solver(o.solver)};
 
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
@@ -175,17 +155,11 @@ int run(const Options& o) {
   j["basis"] = o.basis;
   j["mesh"] = o.mesh.empty() ? "default:quarter-annulus" : o.mesh;
   j["dimension"] = geometry.dim();
-  j["degree"] = o.basis == "cc" || o.basis == "polyhedral" ? 3 : o.degree;
+  j["degree"] = degree;
   j["refine"] = refine_steps;
+  j["nested_refinement"] = refined.nested;
   if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
-  if (o.basis == "cc") j["cc_global_steps"] = global_steps;
-  if (o.basis == "polyhedral") {
-    j["net_catmull_clark_steps"] = net_steps;
-    std::map<std::string, int> patches;
-    const auto& ps = dynamic_cast<const basis::polyhedral::PolyhedralSpace&>(geometry.space());
-    for (Index e = 0; e < ps.num_elements(); ++e) ++patches[basis::polyhedral::to_string(ps.configuration(e))];
-    j["patches_per_configuration"] = patches;
-  }
+  for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
                   {"source", o.source}, {"dirichlet", o.dirichlet}, {"neumann", o.neumann},
                   {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where}, {"exact", o.exact},
@@ -240,7 +214,13 @@ int main(int argc, char** argv) {
   Options o;
   app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline); default: the embedded quarter annulus")
       ->check(CLI::ExistingFile);
-  app.add_option("--basis", o.basis, "basis backend")->check(CLI::IsMember({"bspline", "cc", "halfbox", "polyhedral"}))->capture_default_str();
+  std::vector<std::string> backend_list;
+  std::string backend_help = "basis backend:";
+  for (const auto& b : iga::basis::backends()) {
+    backend_list.push_back(b.name);
+    backend_help += " " + b.name + " (" + b.description + ");";
+  }
+  app.add_option("--basis", o.basis, backend_help)->check(CLI::IsMember(backend_list))->capture_default_str();
   app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(CLI::Range(1, 12))->capture_default_str();
   app.add_option("--refine-intervals", o.refine_intervals, "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
   app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for polyhedral, where each step is a Catmull–Clark step of the net)")->check(CLI::Range(0, 14));
@@ -264,6 +244,9 @@ int main(int argc, char** argv) {
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   CLI11_PARSE(app, argc, argv);
+  for (const char* option : {"degree", "presubdivide", "refine-intervals"}) {
+    if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
+  }
   try {
     return run(o);
   } catch (const std::exception& e) {

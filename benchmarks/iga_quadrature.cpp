@@ -75,6 +75,7 @@ MatrixComparison compare_matrices(const std::vector<StamElement>& elements, Eige
     if (rules != nullptr) {
       iga::basis::ElementKind kind;
       kind.family = iga::basis::Family::Irregular;
+      kind.scheme = iga::basis::Scheme::CatmullClark;
       kind.valence = el.valence;
       const iga::quadrature::Rule& rule = rules->rule(kind);
       iga::basis::BasisValues bv;

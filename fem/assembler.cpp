@@ -141,8 +141,9 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
   Eigen::MatrixXd k;
   Eigen::VectorXd f;
   for (const basis::BoundaryEdge& edge : edges) {
-    for (Index i = 0; i < q; ++i) pts.col(i) = basis::side_point(edge.side, line.points(i));
-    const Eigen::Vector2d dt = basis::side_tangent(edge.side);
+    const basis::Shape shape = space.kind(edge.element).shape;
+    for (Index i = 0; i < q; ++i) pts.col(i) = basis::side_point(shape, edge.side, line.points(i));
+    const Eigen::Vector2d dt = basis::side_tangent(shape, edge.side);
     ctx.element = edge.element;
     ctx.side = edge.side;
     space.evaluate(edge.element, pts, 1, ctx.basis);

@@ -30,7 +30,7 @@ PoissonResult solve_poisson(const basis::Geometry& geometry, const quadrature::R
                    problem.neumann_parts.end();
     if (!neumann && problem.neumann_where) {
       Eigen::Matrix2Xd mid(2, 1);
-      mid.col(0) = basis::side_point(e.side, 0.5);
+      mid.col(0) = basis::side_point(space.kind(e.element).shape, e.side, 0.5);
       basis::BasisValues bv;
       basis::GeometryValues gv;
       space.evaluate(e.element, mid, 1, bv);

@@ -15,8 +15,18 @@ namespace iga::quadrature {
 /// points; weights sum to 1.
 Rule tiled_rule(int p, int levels);
 
-/// PerTile(p, levels): the tiled rule on Irregular quads, p × p Gauss on all other quads, the collapsed rule
-/// on triangles, p points on sides. Name "tiles:P:L".
+/// The tiles of an irregular triangle with its extraordinary face at corner (0,0) (half-box subdivision,
+/// thesis §3.2.1, Figure 3.15): with a = 2^-l, layer l >= 1 is the strip a <= u + v <= 2a, made of the
+/// triangles Ω_{1,l} = (a,0), (2a,0), (a,a); Ω_{2,l} = (a,0), (a,a), (0,a) (the middle, down-oriented one);
+/// Ω_{3,l} = (0,a), (a,a), (0,2a). The functions are polynomial on each tile. Returns the collapsed p × p rule
+/// (tensor_rule.hpp) mapped affinely onto each tile of levels 1..levels and onto the remaining corner triangle
+/// u + v <= 2^-levels (not polynomial there; interior points only, weights completing the area 1/2).
+/// (3·levels + 1)·p² points.
+Rule tiled_triangle_rule(int p, int levels);
+
+/// PerTile(p, levels): the tiled rule on irregular Catmull–Clark quads, the tiled triangle rule on irregular
+/// half-box triangles, p × p Gauss on polynomial quads, the collapsed rule on polynomial triangles, p points
+/// on sides; UnsupportedError naming any other irregular kind. Name "tiles:P:L".
 class PerTile final : public RuleProvider {
  public:
   PerTile(int points_per_direction, int levels);
@@ -28,7 +38,7 @@ class PerTile final : public RuleProvider {
  private:
   Gauss gauss_;
   int levels_;
-  Rule tiled_;
+  Rule tiled_, tiled_triangle_;
 };
 
 }  // namespace iga::quadrature

@@ -24,6 +24,14 @@ const Rule& Gauss::rule(const basis::ElementKind& kind) const {
   return kind.shape == basis::Shape::Quad ? quad_ : triangle_;
 }
 
+const Rule& polynomial_rule(const Gauss& gauss, const basis::ElementKind& kind, const std::string& provider) {
+  if (kind.family == basis::Family::Irregular) {
+    throw UnsupportedError("quadrature '" + provider + "' has no rule for " + basis::to_string(kind) +
+                           " elements (use gauss:P or tiles:P:L)");
+  }
+  return gauss.rule(kind);
+}
+
 namespace {
 // Whole number from a piece of a specification; InputError naming the specification otherwise.
 int parse_count(const std::string& text, const std::string& spec, const std::string& expected) {

@@ -36,6 +36,16 @@ class Gauss final : public RuleProvider {
   Rule quad_, triangle_;
 };
 
+/// An irregular quad of the Catmull–Clark scheme (the kind the tiled, macro and fitted rules are made for).
+inline bool is_catmull_clark_irregular(const basis::ElementKind& k) {
+  return k.shape == basis::Shape::Quad && k.family == basis::Family::Irregular && k.scheme == basis::Scheme::CatmullClark;
+}
+
+/// What a provider with special rules for some irregular kinds uses for every other kind: `gauss`'s rule on
+/// polynomial elements (Regular, Polar, TJunction), and UnsupportedError naming the provider and the kind for
+/// an infinitely piecewise element it has no rule for (plain Gauss there would be a silent wrong answer).
+const Rule& polynomial_rule(const Gauss& gauss, const basis::ElementKind& kind, const std::string& provider);
+
 /// Makes a provider from a specification: "gauss:P", "tiles:P:L" (PerTile), "macro:R[:L]" (strip and macro
 /// Gauss rules for spline spaces, spline_gauss::MacroPatch), "fitted[:SPACE][:DIR]" (moment-fitted tables,
 /// moment_fit::Fitted; SPACE phi (the default), mass or stiffness selects the cc_<SPACE>_n<N> tables; DIR

@@ -54,7 +54,7 @@ Eigen::SparseMatrix<double> refine_smooth_matrix(int degree, const std::vector<d
 
 Refinement refine_smooth_tensor(const basis::Geometry& geometry, const std::vector<Index>& intervals_u,
                                 const std::vector<Index>& intervals_v) {
-  const auto* tensor = dynamic_cast<const basis::bspline::TensorSpace*>(&geometry.space());
+  const basis::bspline::TensorSpace* tensor = basis::bspline::tensor_space(geometry.space());
   if (!tensor) {
     throw UnsupportedError("refine-and-smooth refinement of a '" + geometry.space().name() +
                            "' space is not implemented (tensor-product B-splines only)");
@@ -91,7 +91,7 @@ Refinement refine_smooth_tensor(const basis::Geometry& geometry, const std::vect
   r.setFromTriplets(trip.begin(), trip.end());
   auto fine = std::make_shared<const basis::bspline::TensorSpace>(fu, fv);
   Eigen::MatrixXd cp = r * geometry.control_points();
-  return {basis::Geometry(fine, std::move(cp)), std::move(r)};
+  return {basis::Geometry(fine, std::move(cp)), std::move(r), true};
 }
 
 }  // namespace iga::refine

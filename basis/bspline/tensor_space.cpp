@@ -95,6 +95,8 @@ std::vector<BoundaryEdge> TensorSpace::boundary_edges() const {
   return edges;
 }
 
+const TensorSpace* tensor_space(const Space& space) { return dynamic_cast<const TensorSpace*>(&space); }
+
 Eigen::SparseMatrix<double> refinement_matrix(const TensorSpace& coarse, const TensorSpace& fine) {
   const Eigen::SparseMatrix<double> ru = refinement_matrix(coarse.knots_u(), fine.knots_u());
   const Eigen::SparseMatrix<double> rv = refinement_matrix(coarse.knots_v(), fine.knots_v());

@@ -43,6 +43,10 @@ class TensorSpace final : public Space {
   std::vector<Index> dofs_;               // nloc_ per element
 };
 
+/// The space as a tensor-product B-spline space, or nullptr when it is another backend's (for algorithms that
+/// work on knot vectors, such as refine::refine_smooth_tensor).
+const TensorSpace* tensor_space(const Space& space);
+
 /// Refinement matrix between two tensor spaces whose knot vectors are nested in each direction:
 /// kron(R_v, R_u), so fine control points = R * coarse control points.
 Eigen::SparseMatrix<double> refinement_matrix(const TensorSpace& coarse, const TensorSpace& fine);

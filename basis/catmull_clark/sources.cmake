@@ -8,4 +8,5 @@ set(IGA_CATMULL_CLARK_SOURCES
   catmull_clark/space.cpp
   catmull_clark/subdivision_matrix.cpp
   catmull_clark/eigen_structure.cpp
+  catmull_clark/backend.cpp
 )

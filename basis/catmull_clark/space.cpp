@@ -108,7 +108,7 @@ void CatmullClarkSpace::build_elements(const std::string& name, IrregularMethod 
     for (int i = 0; i < 4; ++i) {
       if (is_extraordinary(net_, fv[i])) {
         el.rotation = i;
-        el.kind = {Shape::Quad, Family::Irregular, ev_valence(net_, fv[i]), net_.is_boundary_vertex(fv[i])};
+        el.kind = {Shape::Quad, Family::Irregular, ev_valence(net_, fv[i]), net_.is_boundary_vertex(fv[i]), Scheme::CatmullClark};
       }
     }
     try {

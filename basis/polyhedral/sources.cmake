@@ -11,4 +11,5 @@ set(IGA_POLYHEDRAL_SOURCES
   polyhedral/tjunction_cap.cpp
   polyhedral/masks.cpp
   polyhedral/space.cpp
+  polyhedral/backend.cpp
 )

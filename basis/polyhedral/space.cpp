@@ -38,7 +38,7 @@ std::array<int, 4> side_rows(int side) {
 
 }  // namespace
 
-PolyhedralSpace::PolyhedralSpace(const mesh::PolyMesh& net) : sites_(classify(net)) {
+PolyhedralSpace::PolyhedralSpace(const mesh::PolyMesh& net) : net_(net), sites_(classify(net)) {
   // Every configuration must have a mask: name each missing one once, with its count and first site.
   std::map<std::pair<int, int>, std::pair<int, std::string>> missing;
   for (const ConfigurationSite& s : sites_) {

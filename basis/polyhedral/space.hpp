@@ -43,6 +43,8 @@ class PolyhedralSpace final : public Space {
   std::vector<BoundaryEdge> boundary_edges() const override { return boundary_; }
   std::vector<std::string> boundary_part_names() const override { return {"boundary"}; }
 
+  /// The control net the space was built from (dofs are some of its vertices).
+  const mesh::PolyMesh& control_net() const { return net_; }
   /// The control-net vertex (0-based) of a dof.
   Index vertex(Index dof) const { return vertex_of_dof_[static_cast<std::size_t>(dof)]; }
   /// The configuration site (index into sites()) and the patch within it of element e.
@@ -62,6 +64,7 @@ class PolyhedralSpace final : public Space {
   };
   void build_boundary();
 
+  mesh::PolyMesh net_;
   std::vector<ConfigurationSite> sites_;
   std::vector<Element> elements_;
   std::vector<Index> vertex_of_dof_;

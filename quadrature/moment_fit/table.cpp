@@ -154,7 +154,7 @@ Fitted::Fitted(const std::string& directory, Space space)
 }
 
 const Rule& Fitted::rule(const basis::ElementKind& kind) const {
-  if (kind.shape == basis::Shape::Quad && kind.family == basis::Family::Irregular) {
+  if (is_catmull_clark_irregular(kind)) {
     if (kind.boundary) return tiled_;
     const int n = kind.valence;
     if (n < 0 || n > 16 || rules_[static_cast<std::size_t>(n)].size() == 0) {
@@ -163,7 +163,7 @@ const Rule& Fitted::rule(const basis::ElementKind& kind) const {
     }
     return rules_[static_cast<std::size_t>(n)];
   }
-  return gauss_.rule(kind);
+  return polynomial_rule(gauss_, kind, name());
 }
 
 std::vector<int> Fitted::valences() const {

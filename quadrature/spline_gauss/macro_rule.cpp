@@ -117,10 +117,8 @@ MacroPatch::MacroPatch(int r, int levels, Space space)
       tiled_(tiled_rule(4, covered_levels(r, levels))) {}
 
 const Rule& MacroPatch::rule(const basis::ElementKind& kind) const {
-  if (kind.shape == basis::Shape::Quad && kind.family == basis::Family::Irregular) {
-    return kind.boundary ? tiled_ : macro_;
-  }
-  return gauss_.rule(kind);
+  if (is_catmull_clark_irregular(kind)) return kind.boundary ? tiled_ : macro_;
+  return polynomial_rule(gauss_, kind, name());
 }
 
 std::string MacroPatch::name() const {

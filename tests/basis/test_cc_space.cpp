@@ -419,7 +419,7 @@ TEST(CatmullClarkSpace, UnitSquareNet) {
     std::vector<int> part_edge(names.size(), -1);
     for (const auto& be : space.boundary_edges()) {
       Eigen::Matrix2Xd pts(2, 11);
-      for (int i = 0; i <= 10; ++i) pts.col(i) = iga::basis::side_point(be.side, i / 10.0);
+      for (int i = 0; i <= 10; ++i) pts.col(i) = iga::basis::side_point(iga::basis::Shape::Quad, be.side, i / 10.0);
       space.evaluate(be.element, pts, 0, bv);
       const auto dofs = space.dofs(be.element);
       for (int i = 0; i <= 10; ++i) {

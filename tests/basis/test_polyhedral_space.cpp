@@ -59,7 +59,7 @@ int compare_normals(const Geometry& g, double& worst) {
   for (Index e = 0; e < g.space().num_elements(); ++e) {
     for (int side = 0; side < 4; ++side) {
       for (int k = 1; k <= 3; ++k) {
-        const Eigen::Vector2d uv = side_point(side, k / 4.0);
+        const Eigen::Vector2d uv = side_point(Shape::Quad, side, k / 4.0);
         const auto [x, n] = point_normal(g, e, uv(0), uv(1));
         at[{std::llround(x(0) * 1e8), std::llround(x(1) * 1e8), std::llround(x(2) * 1e8)}].push_back({e, n});
       }
@@ -150,8 +150,8 @@ TEST(PolyhedralSpace, BoundaryEnclosesTheArea) {
     ASSERT_FALSE(edges.empty());
     for (const BoundaryEdge& be : edges) {
       for (Eigen::Index i = 0; i < gl.points.size(); ++i) {
-        const Eigen::Vector2d uv = side_point(be.side, gl.points(i));
-        const Eigen::Vector2d d = side_tangent(be.side);
+        const Eigen::Vector2d uv = side_point(Shape::Quad, be.side, gl.points(i));
+        const Eigen::Vector2d d = side_tangent(Shape::Quad, be.side);
         Eigen::Matrix2Xd p(2, 1);
         p.col(0) = uv;
         GeometryValues gv;

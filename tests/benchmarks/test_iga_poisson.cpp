@@ -173,6 +173,12 @@ TEST_F(IgaPoisson, BadInputGivesOneClearLine) {
       {"--basis cc", "cc"},
       {"--neumann-boundary top", "top"},
       {"--degree 1", "degree"},
+      // Options the backend does not take are errors, not silently ignored (basis/registry.hpp).
+      {"--basis cc --mesh '" + std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj' --degree 5",
+       "--degree is not an option of --basis cc"},
+      {"--basis polyhedral --mesh '" + std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj' --refine-intervals 0",
+       "--refine-intervals is not an option of --basis polyhedral"},
+      {"--presubdivide 1", "--presubdivide is not an option of --basis bspline"},
   };
   for (const Case& c : cases) {
     const Outcome r = run("--vtu none --json none " + c.args);

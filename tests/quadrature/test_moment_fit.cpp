@@ -236,6 +236,7 @@ TEST(MomentFitProvider, UsesTablesOnIrregularQuadsAndGaussElsewhere) {
   EXPECT_EQ(provider->name(), "fitted");
   iga::basis::ElementKind kind;
   kind.family = iga::basis::Family::Irregular;
+  kind.scheme = iga::basis::Scheme::CatmullClark;
   kind.valence = 3;
   const Rule& r3 = provider->rule(kind);
   EXPECT_EQ(r3.size(), 5);  // cc_phi_n3.txt (5 points) beats cc_phi_n3_sym.txt (6)
@@ -288,6 +289,7 @@ TEST(MomentFitProvider, SpecSelectsTheSpaceAndNamesMissingTables) {
 
   iga::basis::ElementKind kind;
   kind.family = iga::basis::Family::Irregular;
+  kind.scheme = iga::basis::Scheme::CatmullClark;
   kind.valence = 5;
   const auto m = make_rule_provider("fitted:mass:" + dir.string(), 4);
   EXPECT_EQ(m->name(), "fitted:mass");

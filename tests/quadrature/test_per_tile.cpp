@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "quadrature/per_tile.hpp"
+#include "quadrature/rule_provider.hpp"
 
 using namespace iga::quadrature;
 
@@ -63,7 +64,7 @@ TEST(PerTile, ExactForLevelwisePolynomials) {
 TEST(PerTile, ProviderDispatchesOnKind) {
   const PerTile t(3, 4);
   EXPECT_EQ(t.name(), "tiles:3:4");
-  iga::basis::ElementKind irregular{iga::basis::Shape::Quad, iga::basis::Family::Irregular, 5};
+  iga::basis::ElementKind irregular{iga::basis::Shape::Quad, iga::basis::Family::Irregular, 5, false, iga::basis::Scheme::CatmullClark};
   EXPECT_EQ(t.rule(irregular).size(), 13 * 9);
   EXPECT_EQ(t.rule(iga::basis::ElementKind{}).size(), 9);
   auto p = make_rule_provider("tiles:2:7", 4);
@@ -72,4 +73,74 @@ TEST(PerTile, ProviderDispatchesOnKind) {
   EXPECT_THROW(make_rule_provider("tiles:2:x", 4), iga::InputError);
   EXPECT_THROW(make_rule_provider("tiles:2:0", 4), iga::InputError);
   EXPECT_THROW(make_rule_provider("gauss:2:3", 4), iga::InputError);
+}
+
+// The tiled triangle rule (half-box elements, EF at (0,0)): point count, area 1/2, points inside, and
+// monomials of total degree <= 2p - 2 exact: ∫_T u^a v^b = a! b! / (a + b + 2)!.
+TEST(PerTileTriangle, CountsAreaAndMonomials) {
+  for (int p = 1; p <= 4; ++p) {
+    for (int levels = 1; levels <= 12; ++levels) {
+      const Rule r = tiled_triangle_rule(p, levels);
+      EXPECT_EQ(r.size(), (3 * levels + 1) * p * p);
+      EXPECT_NEAR(r.weights.sum(), 0.5, 1e-15);
+      EXPECT_GT((r.points.row(0) + r.points.row(1)).minCoeff(), 0.0);  // never at the EF corner
+      EXPECT_GE(r.points.minCoeff(), 0.0);
+      EXPECT_LE((r.points.row(0) + r.points.row(1)).maxCoeff(), 1.0 + 1e-15);
+    }
+  }
+  const int p = 4;
+  const Rule r = tiled_triangle_rule(p, 7);
+  for (int a = 0; a <= 2 * p - 2; ++a) {
+    for (int b = 0; a + b <= 2 * p - 2; ++b) {
+      double s = 0.0;
+      for (Eigen::Index k = 0; k < r.size(); ++k) s += r.weights(k) * std::pow(r.points(0, k), a) * std::pow(r.points(1, k), b);
+      const double exact = std::tgamma(a + 1.0) * std::tgamma(b + 1.0) / std::tgamma(a + b + 3.0);
+      EXPECT_NEAR(s, exact, 1e-15) << a << " " << b;
+    }
+  }
+}
+
+// Exact on functions that are polynomial on each layer only: f = l · u² with l = floor(-log2(u + v)) + 1 the
+// layer (L + 1 on the corner triangle): ∫ = Σ_l l ∫_{layer l} u² + (L + 1) ∫_{corner} u², ∫_{u+v <= c} u² = c⁴/12.
+TEST(PerTileTriangle, ExactForLayerwisePolynomials) {
+  const int levels = 6;
+  const Rule r = tiled_triangle_rule(3, levels);
+  double s = 0.0;
+  for (Eigen::Index k = 0; k < r.size(); ++k) {
+    const double u = r.points(0, k), sum = r.points(0, k) + r.points(1, k);
+    const int layer = std::min(static_cast<int>(std::floor(-std::log2(sum))) + 1, levels + 1);
+    s += r.weights(k) * layer * u * u;
+  }
+  double exact = (levels + 1) * std::pow(std::ldexp(1.0, -levels), 4) / 12.0;
+  for (int l = 1; l <= levels; ++l) {
+    const double a = std::ldexp(1.0, -l);
+    exact += l * (std::pow(2 * a, 4) - std::pow(a, 4)) / 12.0;
+  }
+  EXPECT_NEAR(s, exact, 1e-15);
+}
+
+// Providers serve the kinds they have rules for and name the others (never a silent plain-Gauss fallback on
+// an infinitely piecewise element).
+TEST(PerTileTriangle, ProvidersNameTheKindsTheyCannotServe) {
+  using iga::basis::ElementKind;
+  using iga::basis::Family;
+  using iga::basis::Scheme;
+  using iga::basis::Shape;
+  const ElementKind half_box{Shape::Triangle, Family::Irregular, 5, false, Scheme::HalfBox};
+  const ElementKind unknown{Shape::Quad, Family::Irregular, 5, false, Scheme::None};
+  const PerTile t(3, 4);
+  EXPECT_EQ(t.rule(half_box).size(), 13 * 9);
+  EXPECT_EQ(t.rule(ElementKind{Shape::Triangle, Family::Regular, 6}).size(), 9);
+  EXPECT_THROW(t.rule(unknown), iga::UnsupportedError);
+  for (const char* spec : {"macro:2", "fitted"}) {
+    const auto p = make_rule_provider(spec, 4);
+    try {
+      p->rule(half_box);
+      ADD_FAILURE() << spec << " served a half-box element";
+    } catch (const iga::UnsupportedError& e) {
+      EXPECT_NE(std::string(e.what()).find("triangle/irregular:5 (half-box)"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(spec), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(p->rule(ElementKind{}).size(), 16);  // polynomial quads: 4 × 4 Gauss
+  }
 }

@@ -220,7 +220,7 @@ TEST(MacroRule, ProviderDispatchAndNames) {
   const MacroPatch mp(2);
   EXPECT_EQ(mp.name(), "macro:2");
   EXPECT_EQ(MacroPatch(3, 6).name(), "macro:3:6");
-  const iga::basis::ElementKind irregular{iga::basis::Shape::Quad, iga::basis::Family::Irregular, 5};
+  const iga::basis::ElementKind irregular{iga::basis::Shape::Quad, iga::basis::Family::Irregular, 5, false, iga::basis::Scheme::CatmullClark};
   const iga::basis::ElementKind regular{};
   const iga::basis::ElementKind tri{iga::basis::Shape::Triangle, iga::basis::Family::Regular, 6};
   EXPECT_EQ(mp.rule(irregular).size(), 4 * 66 + 16);

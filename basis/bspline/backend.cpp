@@ -1,0 +1,96 @@
+// Registration of the tensor-product B-spline backend (basis/registry.hpp).
+#include <memory>
+
+#include "basis/bspline/extraction.hpp"
+#include "basis/bspline/knot_insertion.hpp"
+#include "basis/bspline/patches.hpp"
+#include "basis/bspline/tensor_space.hpp"
+#include "basis/registry.hpp"
+#include "core/error.hpp"
+
+namespace iga::basis {
+namespace {
+
+using bspline::TensorSpace;
+
+const TensorSpace& tensor_of(const Geometry& g) {
+  const TensorSpace* t = bspline::tensor_space(g.space());
+  if (!t) throw InputError("a '" + g.space().name() + "' space is not a tensor-product B-spline space");
+  return *t;
+}
+
+// Each step inserts the midpoint of every non-empty knot interval in both directions (Oslo, thesis §2.3.1);
+// the refinement matrices of the steps compose.
+Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts&) {
+  std::shared_ptr<const TensorSpace> coarse(geometry.space_ptr(), &tensor_of(geometry));
+  Eigen::SparseMatrix<double> total;
+  for (int s = 0; s < steps; ++s) {
+    auto fine = std::make_shared<const TensorSpace>(bspline::insert_midpoints(coarse->knots_u()),
+                                                    bspline::insert_midpoints(coarse->knots_v()));
+    Eigen::SparseMatrix<double> r = bspline::refinement_matrix(*coarse, *fine);
+    if (s == 0) {
+      total.swap(r);
+    } else {
+      Eigen::SparseMatrix<double> composed = r * total;
+      total.swap(composed);
+    }
+    coarse = fine;
+  }
+  Eigen::MatrixXd cp = total * geometry.control_points();
+  return {Geometry(coarse, std::move(cp)), std::move(total), true};
+}
+
+// Every element by Bézier extraction: BB coefficient (a, b) = Σ_ij C_u(i, a) C_v(j, b) P_dof(i, j).
+std::vector<BezierPatch> extracted_patches(const Geometry& geometry, const BackendOptions&, BackendFacts&) {
+  const TensorSpace& space = tensor_of(geometry);
+  Eigen::MatrixXd cp = Eigen::MatrixXd::Zero(geometry.control_points().rows(), 3);
+  cp.leftCols(geometry.dim()) = geometry.control_points();
+  const auto cu = bspline::extraction_operators(space.knots_u());
+  const auto cv = bspline::extraction_operators(space.knots_v());
+  const int p = space.knots_u().degree(), q = space.knots_v().degree();
+  std::vector<BezierPatch> patches;
+  for (Index ey = 0; ey < space.num_elements_v(); ++ey) {
+    for (Index ex = 0; ex < space.num_elements_u(); ++ex) {
+      const Index span_u = space.knots_u().interval_spans()[static_cast<std::size_t>(ex)];
+      const Index span_v = space.knots_v().interval_spans()[static_cast<std::size_t>(ey)];
+      const Eigen::MatrixXd& Cu = cu[static_cast<std::size_t>(ex)];
+      const Eigen::MatrixXd& Cv = cv[static_cast<std::size_t>(ey)];
+      BezierPatch patch{"Group 0 BSpline", false, p, q, Eigen::MatrixXd::Zero((p + 1) * (q + 1), 3)};
+      for (int b = 0; b <= q; ++b) {
+        for (int a = 0; a <= p; ++a) {
+          for (int j = 0; j <= q; ++j) {
+            for (int i = 0; i <= p; ++i) {
+              const Index dof = (span_u - p + i) + space.num_basis_u() * (span_v - q + j);
+              patch.points.row(b * (p + 1) + a) += Cu(i, a) * Cv(j, b) * cp.row(dof);
+            }
+          }
+        }
+      }
+      patches.push_back(std::move(patch));
+    }
+  }
+  return patches;
+}
+
+}  // namespace
+
+Backend bspline_backend() {
+  Backend b;
+  b.name = "bspline";
+  b.description = "tensor-product B-splines on one patch (a structured quad-grid net, or the quarter annulus)";
+  b.options = {"degree", "refine-intervals"};
+  b.default_degree = 3;
+  b.default_refine = 4;
+  b.from_net = [](const mesh::PolyMesh& net, const BackendOptions& o, BackendFacts&) {
+    return bspline::geometry_from_quad_grid(net, o.degree == BackendOptions::kUnset ? 3 : o.degree, o.net_name);
+  };
+  b.default_geometry = [](const BackendOptions& o) {
+    return bspline::make_quarter_annulus(o.degree == BackendOptions::kUnset ? 3 : o.degree);
+  };
+  b.refine = refine_midpoints;
+  b.default_quadrature = [](int degree) { return "gauss:" + std::to_string(degree + 1); };
+  b.bezier_patches = extracted_patches;
+  return b;
+}
+
+}  // namespace iga::basis

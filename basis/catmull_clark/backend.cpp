@@ -1,0 +1,83 @@
+// Registration of the Catmull–Clark subdivision-spline backend (basis/registry.hpp).
+#include <Eigen/Dense>
+#include <memory>
+
+#include "basis/catmull_clark/space.hpp"
+#include "basis/catmull_clark/topology.hpp"
+#include "basis/polyhedral/bezier.hpp"
+#include "basis/registry.hpp"
+#include "core/error.hpp"
+
+namespace iga::basis {
+namespace {
+
+using catmull_clark::CatmullClarkSpace;
+
+const CatmullClarkSpace& cc_of(const Geometry& g) {
+  const auto* cc = dynamic_cast<const CatmullClarkSpace*>(&g.space());
+  if (!cc) throw InputError("a '" + g.space().name() + "' space is not a Catmull–Clark space");
+  return *cc;
+}
+
+Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFacts& facts) {
+  Geometry g = catmull_clark::make_catmull_clark_geometry(net, o.net_name);
+  const int steps = cc_of(g).refinement_steps();
+  facts.counts["cc_global_steps"] = steps;
+  if (steps > 0) {
+    facts.notes.push_back("the net has non-quad faces or faces touching several extraordinary vertices: applied " +
+                          std::to_string(steps) + " global Catmull–Clark step(s) first");
+  }
+  return g;
+}
+
+// `steps` subdivisions of the control net (OpenSubdiv topology); every refined net has quads only, each
+// touching at most one extraordinary vertex, so no global step is needed again.
+Refinement refine_net(const Geometry& geometry, int steps, BackendFacts&) {
+  catmull_clark::NetRefinement net = catmull_clark::refine_net(cc_of(geometry).control_mesh(), steps);
+  auto fine = std::make_shared<const CatmullClarkSpace>(net.mesh, "refined net");
+  if (fine->refinement_steps() != 0) throw NumericalError("refined Catmull–Clark net needed another global step");
+  Eigen::MatrixXd cp = net.prolongation * geometry.control_points();
+  return {Geometry(fine, std::move(cp)), std::move(net.prolongation), true};
+}
+
+// The regular elements are bi-3 polynomials: their BB coefficients are recovered exactly by interpolation at
+// the 4 × 4 points (i/3, j/3). Elements at extraordinary vertices are not polynomial (counted as bv_skipped).
+std::vector<BezierPatch> regular_patches(const Geometry& geometry, const BackendOptions&, BackendFacts& facts) {
+  const Space& space = geometry.space();
+  Eigen::Matrix2Xd pts(2, 16);
+  for (int j = 0; j < 4; ++j) {
+    for (int i = 0; i < 4; ++i) pts.col(j * 4 + i) = Eigen::Vector2d(i / 3.0, j / 3.0);
+  }
+  const Eigen::MatrixXd vandermonde = polyhedral::bernstein_tensor(3, 3, pts, 0, 0).transpose();
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(vandermonde);
+  std::vector<BezierPatch> patches;
+  long long skipped = 0;
+  GeometryValues gv;
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    if (space.kind(e).family != Family::Regular) {
+      ++skipped;
+      continue;
+    }
+    geometry.evaluate(e, pts, gv);
+    patches.push_back({"Group 0 Regular", false, 3, 3, lu.solve(Eigen::MatrixXd(gv.x.transpose()))});
+  }
+  facts.counts["bv_skipped"] = skipped;
+  return patches;
+}
+
+}  // namespace
+
+Backend catmull_clark_backend() {
+  Backend b;
+  b.name = "cc";
+  b.description = "Catmull–Clark subdivision splines on any control net (exact evaluation at extraordinary vertices)";
+  b.default_degree = 3;
+  b.default_refine = 1;
+  b.from_net = from_net;
+  b.refine = refine_net;
+  b.default_quadrature = [](int) { return std::string("gauss:4"); };
+  b.bezier_patches = regular_patches;
+  return b;
+}
+
+}  // namespace iga::basis

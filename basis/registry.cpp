@@ -1,0 +1,81 @@
+#include "basis/registry.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace iga::basis {
+
+const std::vector<Backend>& backends() {
+  // One registration per backend folder; the order is the order of --help and of backend_names().
+  static const std::vector<Backend> all = {bspline_backend(), catmull_clark_backend(), polyhedral_backend()};
+  return all;
+}
+
+std::string backend_names() {
+  std::string names;
+  for (const Backend& b : backends()) names += (names.empty() ? "" : ", ") + b.name;
+  return names;
+}
+
+const Backend& backend(const std::string& name) {
+  for (const Backend& b : backends()) {
+    if (b.name == name) return b;
+  }
+  throw UnsupportedError("--basis " + name + ": not available in this build (available: " + backend_names() + ")");
+}
+
+const Backend& backend_of(const Space& space) {
+  for (const Backend& b : backends()) {
+    if (b.name == space.name()) return b;
+  }
+  throw UnsupportedError("a '" + space.name() + "' space belongs to no registered backend (" + backend_names() + ")");
+}
+
+void check_options(const Backend& backend, const std::vector<std::string>& given) {
+  for (const std::string& option : given) {
+    if (std::find(backend.options.begin(), backend.options.end(), option) != backend.options.end()) continue;
+    std::string takes;
+    for (const std::string& o : backend.options) takes += (takes.empty() ? "--" : ", --") + o;
+    throw InputError("--" + option + " is not an option of --basis " + backend.name +
+                     " (its options: " + (takes.empty() ? "none" : takes) + ")");
+  }
+}
+
+int degree(const Backend& backend, const BackendOptions& options) {
+  return options.degree == BackendOptions::kUnset ? backend.default_degree : options.degree;
+}
+
+Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
+                       BackendFacts& facts) {
+  if (net) return backend.from_net(*net, options, facts);
+  if (!backend.default_geometry) {
+    throw InputError("--basis " + backend.name + " needs --mesh (a control net)");
+  }
+  return backend.default_geometry(options);
+}
+
+Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
+                                 int steps, BackendFacts& facts) {
+  if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
+  if (!backend.nested && net && steps > 0 && backend.refine_net) {
+    Geometry g = backend.from_net(backend.refine_net(*net, steps, facts), options, facts);
+    return {std::move(g), Eigen::SparseMatrix<double>(), false};
+  }
+  return refine_uniform(make_geometry(backend, net, options, facts), steps, facts);
+}
+
+Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts) {
+  if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
+  if (steps == 0) {
+    const Index n = geometry.space().num_dofs();
+    Eigen::SparseMatrix<double> identity(n, n);
+    identity.setIdentity();
+    return {geometry, std::move(identity), true};
+  }
+  const Backend& b = backend_of(geometry.space());
+  if (!b.refine) throw UnsupportedError("uniform refinement of a '" + b.name + "' space is not implemented");
+  return b.refine(geometry, steps, facts);
+}
+
+}  // namespace iga::basis

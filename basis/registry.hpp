@@ -1,0 +1,111 @@
+#pragma once
+// The backend registry (DESIGN.md, "Where the joints must widen next", item 1): the one place that maps a
+// backend name to what programs and refine:: need of it — net → space and geometry, uniform refinement with
+// its prolongation (or "not nested"), defaults (degree, refinement steps, quadrature), the options it takes,
+// and its Bézier patches for export. Programs and refine/ ask the registry; nothing outside basis/ tests a
+// backend's name or type. Adding a backend touches its folder and one line in registry.cpp.
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "basis/geometry.hpp"
+#include "mesh/poly_mesh.hpp"
+
+namespace iga::basis {
+
+/// Settings a program passes to a backend. A setting the backend does not take must be left unset;
+/// check_options() names the ones given in error.
+struct BackendOptions {
+  static constexpr int kUnset = -1;
+  int degree = kUnset;        ///< polynomial degree per direction ("degree": bspline)
+  int presubdivide = kUnset;  ///< Catmull–Clark steps of the net before building ("presubdivide": polyhedral)
+  bool degree_raise = false;  ///< Bézier export: raise every patch to the element degree ("degree-raise")
+  std::string net_name = "mesh";  ///< the net's file name, for messages
+};
+
+/// Facts about a build or refinement that a program reports: counts for the JSON report under '/'-separated
+/// paths ("cc_global_steps", "patches_per_configuration/star5"), notes for stderr. Refinement adds to (or
+/// replaces) what the build wrote.
+struct BackendFacts {
+  std::map<std::string, long long> counts;
+  std::vector<std::string> notes;  ///< e.g. "applied 1 global Catmull–Clark step(s) first"
+};
+
+/// A refined geometry: the same map on a finer space. Nested spaces carry the prolongation (fine coefficients
+/// = prolongation × coarse coefficients); spaces that are not nested (polyhedral: a refined net gives a new
+/// space that does not contain the old one) have nested = false and an empty prolongation.
+struct Refinement {
+  Geometry geometry;
+  Eigen::SparseMatrix<double> prolongation;
+  bool nested = true;
+};
+
+/// One Bézier patch of a geometry for export (BezierView .bv): a tensor-product patch of degrees
+/// (degree_u, degree_v) with (degree_u + 1)(degree_v + 1) points in u-fastest order, or a triangular patch
+/// (triangle = true) of degree degree_u with its (d+1)(d+2)/2 points b_ijk in the order of io/bv.hpp.
+struct BezierPatch {
+  std::string group;
+  bool triangle = false;
+  int degree_u = 0, degree_v = 0;
+  Eigen::MatrixXd points;  ///< rows × 3
+};
+
+struct Backend {
+  std::string name;         ///< as on the command line (--basis NAME); equals Space::name() of its spaces
+  std::string description;  ///< one line for --help
+  /// Options it takes beyond the common ones, by their program names: "degree", "presubdivide",
+  /// "degree-raise", "refine-intervals".
+  std::vector<std::string> options;
+  int default_degree = 3;  ///< degree per direction of the functions (the default of --degree when taken)
+  int default_refine = 0;  ///< refinement steps programs apply by default
+  bool nested = true;      ///< refinement gives nested spaces with a prolongation
+  /// net → geometry; throws InputError naming the file (options.net_name) on a net it cannot take.
+  std::function<Geometry(const mesh::PolyMesh&, const BackendOptions&, BackendFacts&)> from_net;
+  /// The geometry without a net (bspline: the quarter annulus); empty when a net is required.
+  std::function<Geometry(const BackendOptions&)> default_geometry;
+  /// `steps` uniform refinements (steps >= 1); the map is unchanged.
+  std::function<Refinement(const Geometry&, int steps, BackendFacts&)> refine;
+  /// Not nested backends: `steps` refinements of the net itself, applied before building (so a net that only
+  /// its refinement makes admissible can be used); empty for nested backends.
+  std::function<mesh::PolyMesh(const mesh::PolyMesh&, int steps, BackendFacts&)> refine_net;
+  /// The default quadrature specification for a degree (quadrature::make_rule_provider).
+  std::function<std::string(int degree)> default_quadrature;
+  /// Bézier patches of the geometry (elements that are not polynomial are counted in facts "bv_skipped").
+  std::function<std::vector<BezierPatch>(const Geometry&, const BackendOptions&, BackendFacts&)> bezier_patches;
+};
+
+/// Every backend of this build, in a fixed order.
+const std::vector<Backend>& backends();
+/// Their names, comma-separated, for messages.
+std::string backend_names();
+/// The backend of a name; UnsupportedError listing the available ones otherwise.
+const Backend& backend(const std::string& name);
+/// The backend a space belongs to (by Space::name()).
+const Backend& backend_of(const Space& space);
+
+/// InputError for the first option in `given` (program names without dashes) that the backend does not take:
+/// "--degree is not an option of --basis cc (its options: none)".
+void check_options(const Backend& backend, const std::vector<std::string>& given);
+/// The degree per direction the backend uses with these options.
+int degree(const Backend& backend, const BackendOptions& options);
+/// The geometry from a net, or the backend's default geometry when net is null (InputError naming the backend
+/// when it needs a net).
+Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
+                       BackendFacts& facts);
+/// The geometry from a net (or the default geometry) refined `steps` >= 0 times: nested backends build and
+/// refine (with the prolongation), the others refine the net first and build once.
+Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
+                                 int steps, BackendFacts& facts);
+/// `steps` >= 0 uniform refinements through the backend of the geometry's space (steps = 0: the geometry and
+/// the identity).
+Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts);
+
+/// Registration functions, one per backend folder.
+Backend bspline_backend();
+Backend catmull_clark_backend();
+Backend polyhedral_backend();
+
+}  // namespace iga::basis
