@@ -4,7 +4,12 @@
 
 Extraordinary vertices are made by an edge flip: two quads sharing an edge form a hexagon, which is split
 into two quads along another pair of opposite vertices; the ends of the old edge lose a valence, the ends of
-the new one gain one. Positions are not moved."""
+the new one gain one. Positions are not moved.
+
+The triangle meshes (tri_*.obj, input of the three-valent net constructions) split grid cells along one
+diagonal; flipping the diagonals of a rectangle of cells keeps every interior vertex at valence 6 except the
+rectangle's corners: 5 at its lower-left and upper-right corner, 7 at the other two (separated when the
+rectangle is at least 2 x 2 cells)."""
 import math
 import os
 
@@ -127,6 +132,79 @@ def torus_with_evs(m=12, n=6, big=2.0, small=0.7):
     flip(faces, 8 + m * 3, 8 + m * 4, 1)
     return verts, faces
 
+def triangulated_grid(nx, ny, x0, x1, y0, y1, skip=lambda i, j: False, flipped=lambda i, j: False):
+    """Each quad of grid() split into two counter-clockwise triangles along the diagonal (i,j)-(i+1,j+1), or
+    along (i+1,j)-(i,j+1) where flipped(i, j)."""
+    verts, quads, index = grid(nx, ny, x0, x1, y0, y1, skip)
+    grid_point = {v: ij for ij, v in index.items()}
+    faces = []
+    for a, b, c, d in quads:
+        i, j = grid_point[a]
+        if flipped(i, j):
+            faces += [[a, b, d], [b, c, d]]
+        else:
+            faces += [[a, b, c], [a, c, d]]
+    return verts, faces
+
+def in_rectangles(rects):
+    return lambda i, j: any(i0 <= i < i1 and j0 <= j < j1 for i0, i1, j0, j1 in rects)
+
+def tri_square():
+    """Unit square, 8 x 8 cells, 128 triangles; flipped cells [2,5)^2 make interior valences 5 at grid points
+    (2,2), (5,5) and 7 at (5,2), (2,5)."""
+    return triangulated_grid(8, 8, 0.0, 1.0, 0.0, 1.0, flipped=in_rectangles([(2, 5, 2, 5)]))
+
+def tri_l_shape():
+    """[0,2]^2 minus [1,2]^2, cells of side 1/4, 96 triangles; flipped cells [1,3)x[1,3) and [5,7)x[1,3) make
+    interior valences 5 at grid points (1,1), (3,3), (5,1), (7,3) and 7 at (3,1), (1,3), (7,1), (5,3)."""
+    return triangulated_grid(8, 8, 0.0, 2.0, 0.0, 2.0, skip=lambda i, j: i >= 4 and j >= 4,
+                             flipped=in_rectangles([(1, 3, 1, 3), (5, 7, 1, 3)]))
+
+def tri_sphere(levels=2):
+    """Icosahedron, each triangle split into 4 `levels` times, projected to the unit sphere: 320 triangles,
+    162 vertices, the 12 of the icosahedron of valence 5 (two edges apart after one split), the rest 6."""
+    g = (1.0 + math.sqrt(5.0)) / 2.0
+    verts = [(-1, g, 0), (1, g, 0), (-1, -g, 0), (1, -g, 0), (0, -1, g), (0, 1, g), (0, -1, -g), (0, 1, -g),
+             (g, 0, -1), (g, 0, 1), (-g, 0, -1), (-g, 0, 1)]
+    faces = [[0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4], [11, 10, 2],
+             [10, 7, 6], [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5],
+             [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1]]
+    unit = lambda p: tuple(c / math.sqrt(sum(x * x for x in p)) for c in p)
+    verts = [unit(p) for p in verts]
+    for _ in range(levels):
+        mid = {}
+        def m(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in mid:
+                mid[key] = len(verts)
+                verts.append(unit(tuple((verts[a][c] + verts[b][c]) / 2 for c in range(3))))
+            return mid[key]
+        faces = [t for a, b, c in faces for t in ([a, m(a, b), m(c, a)], [b, m(b, c), m(a, b)],
+                                                   [c, m(c, a), m(b, c)], [m(a, b), m(b, c), m(c, a)])]
+    for a, b, c in faces:  # outward counter-clockwise: (b - a) x (c - a) points away from the centre
+        u = [verts[b][k] - verts[a][k] for k in range(3)]
+        w = [verts[c][k] - verts[a][k] for k in range(3)]
+        n = (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+        if sum(n[k] * verts[a][k] for k in range(3)) <= 0:
+            raise ValueError("icosphere triangle not outward")
+    return verts, faces
+
+def tri_torus(m=12, n=6, big=2.0, small=0.7):
+    """The torus of torus_with_evs() without flips, each quad split along one diagonal: 144 triangles, every
+    vertex of valence 6."""
+    verts, quads = [], []
+    for j in range(n):
+        for i in range(m):
+            t, p = 2 * math.pi * i / m, 2 * math.pi * j / n
+            verts.append(((big + small * math.cos(p)) * math.cos(t), (big + small * math.cos(p)) * math.sin(t), small * math.sin(p)))
+    vid = lambda i, j: (i % m) + m * (j % n)
+    faces = []
+    for j in range(n):
+        for i in range(m):
+            a, b, c, d = vid(i, j), vid(i + 1, j), vid(i + 1, j + 1), vid(i, j + 1)
+            faces += [[a, b, c], [a, c, d]]
+    return verts, faces
+
 def main():
     out = os.path.join("data", "meshes")
     os.makedirs(out, exist_ok=True)
@@ -136,6 +214,10 @@ def main():
         "l_shape.obj": (l_shape(), "L-shaped domain [0,2]^2 minus [1,2]^2 (area 3); the reflex corner is a boundary EV"),
         "cube.obj": (cube(), "closed surface: the cube [-1,1]^3, 2 x 2 quads per side; corners have valence 3"),
         "torus_evs.obj": (torus_with_evs(), "closed torus-like surface (R = 2, r = 0.7) with EVs of valence 3 and 5"),
+        "tri_square.obj": (tri_square(), "triangulated unit square, separated interior vertices of valence 5 (2) and 7 (2)"),
+        "tri_l_shape.obj": (tri_l_shape(), "triangulated L-shape [0,2]^2 minus [1,2]^2, separated interior vertices of valence 5 (4) and 7 (4)"),
+        "tri_sphere.obj": (tri_sphere(), "unit sphere: icosahedron split twice, 12 separated vertices of valence 5, the rest 6"),
+        "tri_torus.obj": (tri_torus(), "triangulated torus (R = 2, r = 0.7), every vertex of valence 6"),
     }
     for name, ((verts, faces), comment) in nets.items():
         val = valences(verts, faces)
