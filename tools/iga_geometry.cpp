@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -24,19 +25,52 @@
 #include "io/report.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
+#include "mesh/obj_writer.hpp"
+#include "mesh/three_valent.hpp"
 
 using iga::Index;
 
 namespace {
 
 struct Options {
-  std::string basis = "polyhedral", mesh, vtu, bv, json;
+  std::string basis = "polyhedral", mesh, vtu, bv, json, three_valent, obj;
   int presubdivide = 0, degree = 3, samples = 5;
   bool degree_raise = false, quiet = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
 };
 
+// --three-valent dual|trisect: a three-valent net from a triangle mesh (thesis Appendix B), written as OBJ,
+// with its face sizes in the report.
+int make_three_valent(const Options& o) {
+  if (o.obj.empty()) throw iga::InputError("--three-valent needs --obj FILE for the net");
+  const iga::mesh::PolyMesh triangles = iga::mesh::read_obj(o.mesh);
+  iga::mesh::PolyMesh net;
+  try {
+    net = o.three_valent == "dual" ? iga::mesh::dual_net(triangles) : iga::mesh::trisect_net(triangles);
+  } catch (const iga::InputError& e) {
+    throw iga::InputError(o.mesh, 0, e.what());
+  }
+  iga::mesh::write_obj(net, o.obj);
+  nlohmann::json j;
+  j["program"] = "iga-geometry";
+  j["three_valent"] = o.three_valent;
+  j["mesh"] = o.mesh;
+  j["obj"] = o.obj;
+  j["net_vertices"] = net.num_vertices();
+  j["net_faces"] = net.num_faces();
+  std::map<std::string, long long> sizes;
+  for (Index f = 0; f < net.num_faces(); ++f) ++sizes[std::to_string(net.face_size(f))];
+  j["faces_per_size"] = sizes;
+  if (!o.quiet) {
+    std::cerr << "iga-geometry: wrote " << o.obj << " (" << net.num_vertices() << " vertices, " << net.num_faces()
+              << " faces)" << std::endl;
+  }
+  if (!o.json.empty()) iga::io::write_json(o.json, j);
+  return 0;
+}
+
 int run(const Options& o) {
+  if (!o.three_valent.empty()) return make_three_valent(o);
   auto log = [&](const std::string& s) {
     if (!o.quiet) std::cerr << "iga-geometry: " << s << std::endl;
   };
@@ -108,6 +142,9 @@ int main(int argc, char** argv) {
   app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(CLI::Range(2, 64))->capture_default_str();
   app.add_option("--bv", o.bv, "BezierView output (kind-5 patches)");
   app.add_option("--json", o.json, "JSON report: element and patch counts (polyhedral: per configuration and valence, e.g. star5)");
+  app.add_option("--three-valent", o.three_valent, "make a three-valent net from the triangle mesh --mesh: dual (a vertex per triangle) or trisect (edges split in three, corners cut); written to --obj")
+      ->check(CLI::IsMember({"dual", "trisect"}));
+  app.add_option("--obj", o.obj, "with --three-valent: the OBJ file of the net");
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   CLI11_PARSE(app, argc, argv);
   for (const char* option : {"degree", "presubdivide", "degree-raise"}) {

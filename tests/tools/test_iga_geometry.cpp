@@ -13,12 +13,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "io/bv.hpp"
+#include "mesh/obj_reader.hpp"
+#include "mesh/three_valent.hpp"
 
 namespace fs = std::filesystem;
 
@@ -279,3 +282,38 @@ TEST_F(IgaGeometry, ClosedNetGivesAWatertightSurface) {
 }
 
 }  // namespace
+
+// Triangle mesh → three-valent net (Appendix B): the dual of the 8 × 8 square triangulation has a face per
+// vertex (81), a vertex per triangle plus two per boundary edge (128 + 2·32), and the interior 5- and 7-gons
+// of its valence-5 and -7 vertices; the trisection has V + F faces and 2E + B vertices. The net is read back.
+TEST_F(IgaGeometry, ThreeValentNetsFromATriangulation) {
+  const std::string tri = std::string(IGA_SOURCE_DIR) + "/data/meshes/tri_square.obj";
+  ASSERT_EQ(run("--three-valent dual --mesh '" + tri + "' --obj net.obj --json net.json --quiet").code, 0);
+  nlohmann::json j = report("net.json");
+  EXPECT_EQ(j["net_faces"], 81);
+  EXPECT_EQ(j["net_vertices"], 128 + 2 * 32);
+  // Face sizes from the triangulation: an interior vertex of valence k gives a k-gon, a boundary vertex with
+  // k edges a (k + 2)-gon (its two boundary-edge midpoints and itself close the fan).
+  const iga::mesh::PolyMesh tris = iga::mesh::read_obj(tri);
+  std::map<std::string, long long> sizes;
+  for (iga::Index v = 0; v < tris.num_vertices(); ++v) {
+    ++sizes[std::to_string(tris.valence(static_cast<iga::Index>(v)) + (tris.is_boundary_vertex(v) ? 2 : 0))];
+  }
+  using SizeCounts = std::map<std::string, long long>;
+  EXPECT_EQ(j["faces_per_size"].get<SizeCounts>(), sizes);
+  EXPECT_GE(sizes["7"], 2);
+  const iga::mesh::PolyMesh net = iga::mesh::read_obj((dir_ / "net.obj").string());
+  EXPECT_EQ(net.num_faces(), 81);
+  EXPECT_NO_THROW(iga::mesh::check_three_valent(net, "net.obj"));
+  ASSERT_EQ(run("--three-valent trisect --mesh '" + tri + "' --obj tri.obj --json tri.json --quiet").code, 0);
+  j = report("tri.json");
+  EXPECT_EQ(j["net_faces"], 81 + 128);
+  EXPECT_EQ(j["net_vertices"], 2 * 208 + 32);
+  // A quad mesh is not a triangulation: one line naming the file and the face.
+  write("quads.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  const Outcome r = run("--three-valent dual --mesh quads.obj --obj out.obj");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("quads.obj:0: face 1 has 4 vertices"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(run("--three-valent dual --mesh quads.obj").code, 0);  // no --obj
+}
