@@ -8,7 +8,8 @@ namespace iga::basis {
 
 const std::vector<Backend>& backends() {
   // One registration per backend folder; the order is the order of --help and of backend_names().
-  static const std::vector<Backend> all = {bspline_backend(), catmull_clark_backend(), polyhedral_backend()};
+  static const std::vector<Backend> all = {bspline_backend(), catmull_clark_backend(), polyhedral_backend(),
+                                            half_box_backend()};
   return all;
 }
 
@@ -59,7 +60,7 @@ Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* n
                                  int steps, BackendFacts& facts) {
   if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
   if (!backend.nested && net && steps > 0 && backend.refine_net) {
-    Geometry g = backend.from_net(backend.refine_net(*net, steps, facts), options, facts);
+    Geometry g = backend.from_net(backend.refine_net(*net, steps, options, facts), options, facts);
     return {std::move(g), Eigen::SparseMatrix<double>(), false};
   }
   return refine_uniform(make_geometry(backend, net, options, facts), steps, facts);

@@ -70,7 +70,7 @@ struct Backend {
   std::function<Refinement(const Geometry&, int steps, BackendFacts&)> refine;
   /// Not nested backends: `steps` refinements of the net itself, applied before building (so a net that only
   /// its refinement makes admissible can be used); empty for nested backends.
-  std::function<mesh::PolyMesh(const mesh::PolyMesh&, int steps, BackendFacts&)> refine_net;
+  std::function<mesh::PolyMesh(const mesh::PolyMesh&, int steps, const BackendOptions&, BackendFacts&)> refine_net;
   /// The default quadrature specification for a degree (quadrature::make_rule_provider).
   std::function<std::string(int degree)> default_quadrature;
   /// Bézier patches of the geometry (elements that are not polynomial are counted in facts "bv_skipped").
@@ -107,5 +107,6 @@ Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& fac
 Backend bspline_backend();
 Backend catmull_clark_backend();
 Backend polyhedral_backend();
+Backend half_box_backend();
 
 }  // namespace iga::basis

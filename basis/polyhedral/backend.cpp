@@ -75,7 +75,7 @@ mesh::PolyMesh current_net(const Geometry& geometry) {
   return mesh::PolyMesh::build(std::move(points), std::move(faces));
 }
 
-mesh::PolyMesh refine_net_first(const mesh::PolyMesh& net, int steps, BackendFacts& facts) {
+mesh::PolyMesh refine_net_first(const mesh::PolyMesh& net, int steps, const BackendOptions&, BackendFacts& facts) {
   facts.counts["net_catmull_clark_steps"] += steps;
   return polyhedral::presubdivide(net, steps);
 }

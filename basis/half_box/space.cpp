@@ -1,0 +1,97 @@
+#include "basis/half_box/space.hpp"
+
+#include <algorithm>
+
+#include "basis/half_box/irregular_patch.hpp"
+#include "basis/half_box/patch_net.hpp"
+#include "basis/half_box/subdivision.hpp"
+#include "core/error.hpp"
+#include "mesh/three_valent.hpp"
+
+namespace iga::basis::half_box {
+namespace {
+
+// The net vertex across side i of a patch: the neighbour of its vertex shared by F_i and F_{i+1}
+// (patch_net.hpp orders: regular u0, u1, u2 = points 1, 2, 3; EF patch n − 1, n + 3, 1).
+std::array<Index, 3> across_sides(const PatchNet& p) {
+  const auto& q = p.points;
+  if (p.valence == 6) return {q[1], q[2], q[3]};
+  const auto n = static_cast<std::size_t>(p.valence);
+  return {q[n - 1], q[n + 3], q[1]};
+}
+
+bool has_three_faces(const mesh::PolyMesh& net, Index v) {
+  return net.valence(v) == 3 && net.num_vertex_faces(v) == 3;
+}
+
+}  // namespace
+
+HalfBoxSpace::HalfBoxSpace(const mesh::PolyMesh& net, const std::string& name) : net_(net) {
+  mesh::check_three_valent(net_, name);
+  if (!efs_separated(net_)) {
+    // Two extraordinary faces at a vertex: one step shrinks every face inside a ring of new hexagons.
+    net_ = net_.is_closed() ? subdivide(net_).net : subdivide_local(net_).net;
+    steps_ = 1;
+  }
+  build_elements(name);
+  build_boundary();
+}
+
+void HalfBoxSpace::build_elements(const std::string& name) {
+  std::vector<Index> dof_of_vertex(static_cast<std::size_t>(net_.num_vertices()), -1);
+  for (Index v = 0; v < net_.num_vertices(); ++v) {
+    if (!has_three_faces(net_, v)) continue;
+    PatchNet p;
+    try {
+      p = patch_net(net_, v);
+    } catch (const InputError& e) {
+      throw InputError(name, 0, e.what());
+    }
+    Element el;
+    el.vertex = v;
+    el.kind = p.valence == 6 ? ElementKind{Shape::Triangle, Family::Regular, 6}
+                             : ElementKind{Shape::Triangle, Family::Irregular, p.valence, false, Scheme::HalfBox};
+    el.across = across_sides(p);
+    el.dofs = std::move(p.points);
+    for (Index w : el.dofs) dof_of_vertex[static_cast<std::size_t>(w)] = 0;
+    elements_.push_back(std::move(el));
+  }
+  if (elements_.empty()) throw InputError(name, 0, "no net vertex has three faces: the net has no half-box patch");
+  for (Index v = 0; v < net_.num_vertices(); ++v) {
+    if (dof_of_vertex[static_cast<std::size_t>(v)] < 0) continue;
+    dof_of_vertex[static_cast<std::size_t>(v)] = static_cast<Index>(vertex_of_dof_.size());
+    vertex_of_dof_.push_back(v);
+  }
+  for (Element& el : elements_) {
+    for (Index& w : el.dofs) w = dof_of_vertex[static_cast<std::size_t>(w)];
+    max_local_ = std::max(max_local_, static_cast<Index>(el.dofs.size()));
+  }
+}
+
+void HalfBoxSpace::build_boundary() {
+  for (Index e = 0; e < num_elements(); ++e) {
+    for (int side = 0; side < 3; ++side) {
+      if (!has_three_faces(net_, elements_[static_cast<std::size_t>(e)].across[static_cast<std::size_t>(side)])) {
+        boundary_.push_back({e, side, 0});
+      }
+    }
+  }
+}
+
+std::span<const Index> HalfBoxSpace::dofs(Index e) const { return elements_[static_cast<std::size_t>(e)].dofs; }
+
+void HalfBoxSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
+  evaluate_patch(elements_[static_cast<std::size_t>(e)].kind.valence, pts, derivatives, out);
+}
+
+Geometry make_half_box_geometry(const mesh::PolyMesh& net, const std::string& name) {
+  auto space = std::make_shared<const HalfBoxSpace>(net, name);
+  const int dim = net.is_planar() ? 2 : 3;
+  Eigen::MatrixXd cp(space->num_dofs(), dim);
+  for (Index d = 0; d < space->num_dofs(); ++d) {
+    cp.row(d) = space->control_net().point(space->vertex(d)).head(dim).transpose();
+  }
+  return Geometry(space, std::move(cp));
+}
+
+}  // namespace iga::basis::half_box

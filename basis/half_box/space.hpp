@@ -1,0 +1,77 @@
+#pragma once
+// The half-box spline space of a three-valent control net (thesis §2.2.5, §3.2.1): one triangular element per
+// net vertex with three faces, evaluated by the regular patch (13 control points, regular_patch.hpp) or, when
+// one of its faces is an extraordinary n-gon (n != 6), exactly by (3.40) with matrix powers
+// (irregular_patch.hpp). Dofs are the net vertices that some patch uses.
+//
+// Elements: ElementKind {Triangle, Regular, 6}, or {Triangle, Irregular, n, false, HalfBox} with the EF at
+// reference corner (0,0). Element e is the patch of vertex element_vertex(e); its reference triangle has corner
+// (0,0) in face F0, (1,0) in F1, (0,1) in F2 (counter-clockwise around the vertex), F0 the EF if there is one
+// (patch_net.hpp); side i lies between F_i and F_{i+1}.
+//
+// Nets where two extraordinary faces meet at a vertex get one subdivision step first (refinement_steps() == 1,
+// as Catmull–Clark does for its nets); the refined net is then the control net.
+//
+// Boundary: the thesis's double-knot boundary rule is not implemented. A net with a boundary gives the patches
+// of the vertices that have three faces, so the domain recedes from the net's outer layer (as for the
+// polyhedral backend); the boundary is made of the patch sides whose neighbour vertex has no patch, one part
+// "boundary". The boundary curves depend on interior rows of control points; Dirichlet data then become
+// coupled constraints (fem/dirichlet.hpp).
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "basis/geometry.hpp"
+#include "basis/space.hpp"
+#include "mesh/poly_mesh.hpp"
+
+namespace iga::basis::half_box {
+
+class HalfBoxSpace final : public Space {
+ public:
+  /// InputError (file `name`) for a net that is not three-valent (a vertex named, 1-based) or has no patch;
+  /// UnsupportedError for an extraordinary face of a size without a subdivision structure.
+  explicit HalfBoxSpace(const mesh::PolyMesh& net, const std::string& name = "mesh");
+
+  std::string name() const override { return "halfbox"; }
+  Index num_dofs() const override { return static_cast<Index>(vertex_of_dof_.size()); }
+  Index num_elements() const override { return static_cast<Index>(elements_.size()); }
+  ElementKind kind(Index e) const override { return elements_[static_cast<std::size_t>(e)].kind; }
+  std::span<const Index> dofs(Index e) const override;
+  Index max_local_dofs() const override { return max_local_; }
+  void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
+  std::vector<BoundaryEdge> boundary_edges() const override { return boundary_; }
+  std::vector<std::string> boundary_part_names() const override { return {"boundary"}; }
+
+  /// The control net (after the subdivision step that separates extraordinary faces, if one was needed).
+  const mesh::PolyMesh& control_net() const { return net_; }
+  /// 0 or 1: subdivision steps applied to the given net first.
+  int refinement_steps() const { return steps_; }
+  /// The net vertex (0-based) of a dof, and the vertex whose patch element e is.
+  Index vertex(Index dof) const { return vertex_of_dof_[static_cast<std::size_t>(dof)]; }
+  Index element_vertex(Index e) const { return elements_[static_cast<std::size_t>(e)].vertex; }
+
+ private:
+  struct Element {
+    Index vertex = -1;
+    ElementKind kind;
+    std::vector<Index> dofs;       // patch order (patch_net.hpp)
+    std::array<Index, 3> across{};  // net vertex across side i (the neighbour shared by F_i and F_{i+1})
+  };
+  void build_elements(const std::string& name);
+  void build_boundary();
+
+  mesh::PolyMesh net_;
+  int steps_ = 0;
+  std::vector<Element> elements_;
+  std::vector<Index> vertex_of_dof_;
+  std::vector<BoundaryEdge> boundary_;
+  Index max_local_ = 0;
+};
+
+/// The geometry of a three-valent net: HalfBoxSpace + the positions of its dofs' vertices (dim 2 when all
+/// z == 0, else 3).
+Geometry make_half_box_geometry(const mesh::PolyMesh& net, const std::string& name = "mesh");
+
+}  // namespace iga::basis::half_box
