@@ -111,7 +111,6 @@ NetSubdivision subdivide_checked(const mesh::PolyMesh& net) {
 }  // namespace
 
 NetSubdivision subdivide(const mesh::PolyMesh& net) {
-  check_valence(net, false);
   if (!net.is_closed()) {
     const Index h = net.boundary_loops().front().front();
     throw UnsupportedError("half-box subdivision: the net has a boundary (" +
@@ -119,6 +118,7 @@ NetSubdivision subdivide(const mesh::PolyMesh& net) {
                            std::to_string(net.half_edge(h).origin + 1) +
                            "); boundary rules are not implemented");
   }
+  check_valence(net, false);
   return subdivide_checked(net);
 }
 
