@@ -7,6 +7,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
+#include <vtkCellType.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -14,6 +15,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "mesh/obj_reader.hpp"
+#include "mesh/obj_writer.hpp"
+#include "mesh/three_valent.hpp"
 
 namespace fs = std::filesystem;
 
@@ -139,6 +144,43 @@ TEST_F(IgaPoisson, CatmullClarkSquareWithThreeHoles) {
   grid->GetPointData()->GetArray("u")->GetRange(range);
   EXPECT_GT(range[0], -1.2);
   EXPECT_LT(range[1], 2.2);
+}
+
+// Half-box splines on the dual of a triangulation (a net the program reads; pentagons and heptagons inside):
+// the affine solution is reproduced, the report names the backend and the .vtu has triangle cells whose
+// element_kind codes include the half-box irregular ones (2·10000 + 1000 + 100 + n).
+TEST_F(IgaPoisson, HalfBoxOnTheDualOfATriangulation) {
+  iga::mesh::write_obj(iga::mesh::dual_net(iga::mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/tri_square.obj")),
+                       (dir_ / "net.obj").string());
+  const Outcome r = run("--quiet --basis halfbox --mesh net.obj --refine 1 --problem linear --quadrature tiles:4:16");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = report();
+  EXPECT_EQ(j["basis"], "halfbox");
+  EXPECT_EQ(j["degree"], 3);
+  EXPECT_EQ(j["quadrature"], "tiles:4:16");
+  EXPECT_EQ(j["elements"], 512);  // 128 patches of the dual net, each split in four
+  EXPECT_LT(j["l2_error_relative"].get<double>(), 1e-10);
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName((dir_ / "result.vtu").c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  ASSERT_GT(grid->GetNumberOfCells(), 0);
+  EXPECT_EQ(grid->GetCellType(0), VTK_TRIANGLE);
+  vtkDataArray* kinds = grid->GetCellData()->GetArray("element_kind");
+  ASSERT_NE(kinds, nullptr);
+  bool pentagon = false, heptagon = false;
+  for (vtkIdType c = 0; c < kinds->GetNumberOfTuples(); ++c) {
+    pentagon |= kinds->GetComponent(c, 0) == 21105;
+    heptagon |= kinds->GetComponent(c, 0) == 21107;
+  }
+  EXPECT_TRUE(pentagon);
+  EXPECT_TRUE(heptagon);
+  expect_finite_array(grid->GetPointData()->GetArray("u"), 1);
+  // A quad net is not three-valent: one line naming a vertex.
+  const Outcome bad = run("--basis halfbox --mesh '" + std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj' --vtu none --json none");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("square_evs.obj:0: vertex 3 has 5 edges; a half-box net must be three-valent"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
 // Local refinement by refine-and-smooth: three steps halving interval 0 in both directions grade the mesh
