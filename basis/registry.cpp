@@ -56,6 +56,19 @@ Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const 
   return backend.default_geometry(options);
 }
 
+mesh::PolyMesh net_with_control_points(const mesh::PolyMesh& net, const Geometry& geometry,
+                                       const std::function<Index(Index)>& vertex_of_dof) {
+  std::vector<Eigen::Vector3d> points = net.points();
+  for (Index d = 0; d < geometry.space().num_dofs(); ++d) {
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    p.head(geometry.dim()) = geometry.control_points().row(d).transpose();
+    points[static_cast<std::size_t>(vertex_of_dof(d))] = p;
+  }
+  std::vector<std::vector<Index>> faces;
+  for (Index f = 0; f < net.num_faces(); ++f) faces.emplace_back(net.face(f).begin(), net.face(f).end());
+  return mesh::PolyMesh::build(std::move(points), std::move(faces));
+}
+
 Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
                                  int steps, BackendFacts& facts) {
   if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));

@@ -103,6 +103,12 @@ Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* n
 /// the identity).
 Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts);
 
+/// For backends whose dofs are some of a net's vertices and which refine by rebuilding from a refined net:
+/// the net with the control point of dof d at vertex vertex_of_dof(d) (planar geometries get z = 0; vertices
+/// that are no dof keep their positions).
+mesh::PolyMesh net_with_control_points(const mesh::PolyMesh& net, const Geometry& geometry,
+                                       const std::function<Index(Index)>& vertex_of_dof);
+
 /// Registration functions, one per backend folder.
 Backend bspline_backend();
 Backend catmull_clark_backend();

@@ -9,22 +9,20 @@
 namespace iga::quadrature {
 
 namespace {
-// Appends the square rule `square` mapped affinely onto [u0, u0 + h] × [v0, v0 + h].
-void append_mapped(const Rule& square, double u0, double v0, double h, Rule& out, Eigen::Index& k) {
-  for (Eigen::Index i = 0; i < square.size(); ++i, ++k) {
-    out.points(0, k) = u0 + h * square.points(0, i);
-    out.points(1, k) = v0 + h * square.points(1, i);
-    out.weights(k) = h * h * square.weights(i);
-  }
-}
-// Appends `triangle` (a rule on the unit triangle) mapped affinely onto the triangle a, b, c.
-void append_mapped(const Rule& triangle, const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+// Appends `rule` (on the unit square or the unit triangle) mapped by the affine map (s, t) ↦ a + s (b − a) +
+// t (c − a), weights scaled by its Jacobian.
+void append_mapped(const Rule& rule, const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                    Rule& out, Eigen::Index& k) {
   const double jac = std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
-  for (Eigen::Index i = 0; i < triangle.size(); ++i, ++k) {
-    out.points.col(k) = a + triangle.points(0, i) * (b - a) + triangle.points(1, i) * (c - a);
-    out.weights(k) = jac * triangle.weights(i);
+  for (Eigen::Index i = 0; i < rule.size(); ++i, ++k) {
+    out.points.col(k) = a + rule.points(0, i) * (b - a) + rule.points(1, i) * (c - a);
+    out.weights(k) = jac * rule.weights(i);
   }
+}
+
+// The square rule on [u0, u0 + h] × [v0, v0 + h].
+void append_square(const Rule& square, double u0, double v0, double h, Rule& out, Eigen::Index& k) {
+  append_mapped(square, {u0, v0}, {u0 + h, v0}, {u0, v0 + h}, out, k);
 }
 }  // namespace
 
@@ -59,11 +57,11 @@ Rule tiled_rule(int p, int levels) {
   Eigen::Index k = 0;
   for (int l = 1; l <= levels; ++l) {
     const double h = std::ldexp(1.0, -l);  // 2^-l
-    append_mapped(square, h, 0.0, h, out, k);  // Ω_{1,l}
-    append_mapped(square, h, h, h, out, k);    // Ω_{2,l}
-    append_mapped(square, 0.0, h, h, out, k);  // Ω_{3,l}
+    append_square(square, h, 0.0, h, out, k);  // Ω_{1,l}
+    append_square(square, h, h, h, out, k);    // Ω_{2,l}
+    append_square(square, 0.0, h, h, out, k);  // Ω_{3,l}
   }
-  append_mapped(square, 0.0, 0.0, std::ldexp(1.0, -levels), out, k);  // the remaining corner square
+  append_square(square, 0.0, 0.0, std::ldexp(1.0, -levels), out, k);  // the remaining corner square
   return out;
 }
 

@@ -32,17 +32,8 @@ Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFac
 
 // The net with the geometry's control points at the vertices that are dofs.
 mesh::PolyMesh current_net(const Geometry& geometry) {
-  const HalfBoxSpace& space = half_box_of(geometry);
-  const mesh::PolyMesh& net = space.control_net();
-  std::vector<Eigen::Vector3d> points = net.points();
-  for (Index d = 0; d < space.num_dofs(); ++d) {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    p.head(geometry.dim()) = geometry.control_points().row(d).transpose();
-    points[static_cast<std::size_t>(space.vertex(d))] = p;
-  }
-  std::vector<std::vector<Index>> faces;
-  for (Index f = 0; f < net.num_faces(); ++f) faces.emplace_back(net.face(f).begin(), net.face(f).end());
-  return mesh::PolyMesh::build(std::move(points), std::move(faces));
+  const auto& space = half_box_of(geometry);
+  return net_with_control_points(space.control_net(), geometry, [&](Index d) { return space.vertex(d); });
 }
 
 // Refinement of a net with a boundary: subdivision steps of the open net (the receding boundary stays).
