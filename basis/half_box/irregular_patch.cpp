@@ -60,13 +60,13 @@ void evaluate_irregular(int valence, const Eigen::Matrix2Xd& uv, int derivatives
     const Eigen::Vector2d x = t.jacobian * Eigen::Vector2d(ul, vl) + t.offset;
     bernstein_cubic(x(0), x(1), derivatives, b);
     h.noalias() = mt * b.value;
-    out.value.col(p).noalias() = s.tile_operator(k, layer, 0).transpose() * h;
+    out.value.col(p).noalias() = s.tile_operator(k, layer, false).transpose() * h;
     if (derivatives >= 1) {
       hs.noalias() = mt * b.du;
       ht.noalias() = mt * b.dv;
       const double f = std::ldexp(1.0, layer - 1);
       const Eigen::Matrix2d& j = t.jacobian;
-      const Eigen::MatrixXd& op = s.tile_operator(k, layer, 1);
+      const Eigen::MatrixXd& op = s.tile_operator(k, layer, true);
       out.du.col(p).noalias() = op.transpose() * (f * (j(0, 0) * hs + j(1, 0) * ht));
       out.dv.col(p).noalias() = op.transpose() * (f * (j(0, 1) * hs + j(1, 1) * ht));
     }
@@ -80,7 +80,7 @@ void evaluate_irregular(int valence, const Eigen::Matrix2Xd& uv, int derivatives
       auto second = [&](int a, int c) -> Eigen::Matrix<double, kRegularPatchSize, 1> {
         return f * (j(0, a) * j(0, c) * hss + (j(0, a) * j(1, c) + j(1, a) * j(0, c)) * hst + j(1, a) * j(1, c) * htt);
       };
-      const Eigen::MatrixXd& op = s.tile_operator(k, layer, 2);
+      const Eigen::MatrixXd& op = s.tile_operator(k, layer, true);
       out.duu.col(p).noalias() = op.transpose() * second(0, 0);
       out.duv.col(p).noalias() = op.transpose() * second(0, 1);
       out.dvv.col(p).noalias() = op.transpose() * second(1, 1);

@@ -12,8 +12,10 @@ namespace iga::basis::half_box {
 /// points of the reference triangle {u, v >= 0, u + v <= 1}, EF corner at (0,0)), derivatives with respect to
 /// (u, v) up to `derivatives` (0, 1, 2). The layer of a point is l = 1 − e for u + v = m 2^e, m in [1/2, 1),
 /// (l = 1 for u + v = 1); on it the derivatives carry 2^(l−1) and 4^(l−1). At (0,0) exactly the values are the
-/// limit stencil and the first derivatives the tangent stencils; second derivatives do not exist there (the
-/// eigenvalue 1/4 has piecewise quadratic eigenfunctions) and derivatives = 2 there throws NumericalError.
+/// limit stencil and the first derivatives the tangent stencils of subdivision_structure.hpp (limits along
+/// 2^-m (1/3, 1/3); the parametric derivatives themselves have no limit at the EF for n != 6, but every
+/// limit spans the tangent plane, so du × dv is normal). Second derivatives grow like 1/(u + v) towards the
+/// EF (the eigenfunctions of 1/2 are not linear); derivatives = 2 at (0,0) throws NumericalError.
 /// Below u + v = 2^-64 the limit values and tangent stencils are used (differences below 1e-18), and
 /// derivatives = 2 throws NumericalError as at (0,0).
 /// valence 6 reproduces evaluate_regular (13-point order). Throws InputError for derivatives outside 0..2 or a

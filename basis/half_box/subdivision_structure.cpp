@@ -135,9 +135,9 @@ void generate_operators(SubdivisionStructure& s) {
   const Index np = a.rows();
   const Eigen::MatrixXd id = Eigen::MatrixXd::Identity(np, np);
   const Eigen::MatrixXd one_w0 = Eigen::VectorXd::Ones(np) * s.limit_stencil;
-  const Eigen::MatrixXd b = a - one_w0, q = b - 0.5 * s.half_projector;
-  Eigen::MatrixXd pa = id, pb = id - one_w0, pq = id - one_w0 - s.half_projector;  // m = 0
-  s.operators_.assign(static_cast<std::size_t>(9 * kCachedLayers), Eigen::MatrixXd());
+  const Eigen::MatrixXd b = a - one_w0;
+  Eigen::MatrixXd pa = id, pb = id - one_w0;  // m = 0; B^m = A^m − 1 w0 for m >= 1
+  s.operators_.assign(static_cast<std::size_t>(6 * kCachedLayers), Eigen::MatrixXd());
   s.powers_.clear();
   std::array<Eigen::MatrixXd, 3> xa;
   for (int k = 0; k < 3; ++k) xa[static_cast<std::size_t>(k)] = s.picking_matrix(k) * s.extended_matrix;
@@ -147,13 +147,11 @@ void generate_operators(SubdivisionStructure& s) {
       const Eigen::MatrixXd& x = xa[static_cast<std::size_t>(k)];
       s.operators_[static_cast<std::size_t>((0 * 3 + k) * kCachedLayers + m)] = x * pa;
       s.operators_[static_cast<std::size_t>((1 * 3 + k) * kCachedLayers + m)] = x * pb;
-      s.operators_[static_cast<std::size_t>((2 * 3 + k) * kCachedLayers + m)] = x * pq;
     }
     pa = a * pa;
     pb = b * pb;
-    pq = q * pq;
   }
-  // Tangent stencils: gradient of the eigenfunctions of 1/2 on tile 2 of layer 1, at its centroid.
+  // Tangent stencils: lim 2^(l−1) ∇ X Ā B^(l−1) = ∇ X Ā P at the centroid of tile 2 of layer 1.
   const TileMap& t = s.tiles[2];
   const Eigen::Vector2d c = t.jacobian * Eigen::Vector2d(1.0 / 3.0, 1.0 / 3.0) + t.offset;
   BernsteinValues bv;

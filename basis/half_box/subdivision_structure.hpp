@@ -49,15 +49,19 @@ struct SubdivisionStructure {
   Eigen::RowVectorXd limit_stencil;
   /// Spectral projector P onto the eigenvalue 1/2 (semisimple; checked).
   Eigen::MatrixXd half_projector;
-  /// Rows d/du and d/dv at (0,0): the gradient of the eigenfunctions of 1/2, which are linear (checked).
+  /// Rows: the limits of d/du and d/dv along the points 2^-m (1/3, 1/3), m → ∞ (centroids of the middle
+  /// tiles), i.e. ∇(H111^T(t_2(x)) X^2 Ā P) at x = (1/3, 1/3). Combinations of the left eigenvectors of 1/2:
+  /// they span the tangent plane at the EF limit point. For n != 6 the eigenfunctions of 1/2 are homogeneous
+  /// (ψ(x/2) = ψ(x)/2) but not linear, so the parametric derivatives have no limit at (0,0): other sequences
+  /// give other (bounded) limits in the same tangent plane.
   Eigen::Matrix<double, 2, Eigen::Dynamic> tangent_stencils;
 
-  /// X^k Ā A^(l−1) for order 0; with the eigenvalue-1 part removed, X^k Ā (A^(l−1) − 1 w0), for order 1;
-  /// with the parts of 1 and 1/2 removed, X^k Ā (A^(l−1) − 1 w0 − 2^-(l−1) P), for order 2. Derivatives of
-  /// order r use the deflated operator of order r so that the factor 2^(r(l−1)) multiplies only terms of size
-  /// 2^-(r(l−1)) (no cancellation). 13 × patch_size; layer in 1..kCachedLayers.
-  const Eigen::MatrixXd& tile_operator(int tile, int layer, int order) const {
-    return operators_[static_cast<std::size_t>((order * 3 + tile) * kCachedLayers + (layer - 1))];
+  /// X^k Ā A^(l−1) (derivative = false) or X^k Ā (A^(l−1) − 1 w0) (derivative = true, computed as powers of
+  /// B = A − 1 w0, spectral radius 1/2). Derivatives of order r carry 2^(r(l−1)); with the eigenvalue-1 part
+  /// (whose derivatives vanish) removed beforehand, no cancellation of O(1) terms is amplified. 13 × patch_size;
+  /// layer in 1..kCachedLayers.
+  const Eigen::MatrixXd& tile_operator(int tile, int layer, bool derivative) const {
+    return operators_[static_cast<std::size_t>(((derivative ? 3 : 0) + tile) * kCachedLayers + (layer - 1))];
   }
   /// X^k as a dense 13 × (patch_size + 9) 0/1 matrix.
   Eigen::MatrixXd picking_matrix(int tile) const;
