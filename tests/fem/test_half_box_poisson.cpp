@@ -92,7 +92,8 @@ TEST(HalfBoxPoisson, ConvergenceUnderRefinement) {
 
 // −Δ_S u + u = f on the closed limit surface of the dual of a geodesic sphere (12 pentagons): the spaces of
 // refined closed nets are nested, so u_l (coefficients P u_l on level l + 1) and u_{l+1} are compared on the
-// finer surface, ‖u_{l+1} − u_l‖_L2. The differences fall at a fitted rate (measured 3.9 over levels 0..4).
+// finer surface, ‖u_{l+1} − u_l‖_L2. The differences (1.3e-4, 1.4e-5, 1.8e-6 over levels 0..3) fall at a
+// fitted rate of 3.09.
 TEST(HalfBoxPoisson, LaplaceBeltramiSelfConvergesOnAClosedSurface) {
   const mesh::PolyMesh net = dual_of("tri_sphere.obj");
   fem::PoissonProblem p;
