@@ -1,12 +1,14 @@
 #pragma once
 // The one interface every basis backend implements (DESIGN.md, "basis::Space").
 #include <Eigen/Core>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "basis/basis_values.hpp"
 #include "basis/element_kind.hpp"
+#include "basis/subdivision_view.hpp"
 #include "core/types.hpp"
 
 namespace iga::basis {
@@ -48,6 +50,9 @@ class Space {
   virtual std::vector<BoundaryEdge> boundary_edges() const = 0;
   /// Names of the boundary parts that BoundaryEdge::part indexes.
   virtual std::vector<std::string> boundary_part_names() const = 0;
+  /// For exact integration of an infinitely piecewise element (subdivision_view.hpp): its tiles and
+  /// subdivision structure; std::nullopt for polynomial elements and backends without one.
+  virtual std::optional<SubdivisionElement> subdivision_element(Index) const { return std::nullopt; }
 };
 
 }  // namespace iga::basis

@@ -1,6 +1,7 @@
-// iga-quadrature: the area of a planar Catmull–Clark net or the volume enclosed by a closed one, exactly
-// (geometric series) or with a quadrature rule, with the number of points spent around extraordinary
-// vertices and the error against the exact value. Thin: parses options and calls the library.
+// iga-quadrature: the area of a planar net's domain or the volume enclosed by a closed one, for any backend
+// (--basis, default cc), exactly (geometric series at extraordinary vertices and faces) or with a quadrature
+// rule, with the number of points spent on irregular elements and the error against the exact value. Thin:
+// parses options and calls the library.
 //
 // --quantity mass | stiffness: the matrices ∫ φ_a φ_b and ∫ ∇φ_a·∇φ_b (gradient in the element's parameters
 // (u, v), i.e. planar Poisson on the parameter domain) of the elements at extraordinary vertices, by the rule
@@ -18,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "basis/catmull_clark/space.hpp"
+#include "basis/registry.hpp"
 #include "basis/catmull_clark/stam.hpp"
 #include "core/error.hpp"
 #include "fem/assembler.hpp"
@@ -169,8 +171,12 @@ int run_matrices(const std::string& mesh, int valence, const std::string& quanti
 int main(int argc, char** argv) {
   CLI::App app{"iga-quadrature: area or enclosed volume of a Catmull–Clark surface, or the mass/stiffness matrix "
                "at extraordinary vertices, exactly or by quadrature"};
-  std::string mesh, quantity = "area", method = "exact", json;
+  std::string mesh, quantity = "area", method = "exact", json, basis = "cc";
   int valence = 0;
+  std::vector<std::string> backend_list;
+  for (const auto& b : iga::basis::backends()) backend_list.push_back(b.name);
+  app.add_option("--basis", basis, "area/volume: basis backend (" + iga::basis::backend_names() + ")")
+      ->check(CLI::IsMember(backend_list))->capture_default_str();
   app.add_option("--mesh", mesh, "control net (OBJ); required for area and volume")->check(CLI::ExistingFile);
   app.add_option("--valence", valence, "mass/stiffness: the single irregular element of this valence (3..16), no mesh");
   app.add_option("--quantity", quantity, "area (planar net), volume (closed net), mass or stiffness (matrices at EVs)")
@@ -180,15 +186,24 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     using namespace iga;
-    if (quantity == "mass" || quantity == "stiffness") return run_matrices(mesh, valence, quantity, method, json);
+    if (quantity == "mass" || quantity == "stiffness") {
+      if (app.count("--basis")) throw InputError("--basis is for --quantity area or volume (the matrices are of Catmull–Clark elements)");
+      return run_matrices(mesh, valence, quantity, method, json);
+    }
     if (mesh.empty()) throw InputError("--quantity " + quantity + " needs --mesh");
     if (valence != 0) throw InputError("--valence is only for --quantity mass or stiffness");
-    const basis::Geometry g = basis::catmull_clark::make_catmull_clark_geometry(mesh::read_obj(mesh), mesh);
+    const basis::Backend& backend = basis::backend(basis);
+    basis::BackendOptions options;
+    options.net_name = mesh;
+    basis::BackendFacts facts;
+    const mesh::PolyMesh net = mesh::read_obj(mesh);
+    const basis::Geometry g = basis::make_geometry(backend, &net, options, facts);
+    const int degree = basis::degree(backend, options);
     const bool volume = quantity == "volume";
     if (!volume && g.dim() != 2) throw InputError(mesh, 0, "--quantity area needs a planar net (all z = 0)");
     if (volume && !g.space().boundary_edges().empty()) throw InputError(mesh, 0, "--quantity volume needs a closed net");
-    const double exact = volume ? quadrature::exact::exact_volume(g) : quadrature::exact::exact_area(g);
-    nlohmann::json report = {{"program", "iga-quadrature"}, {"mesh", mesh}, {"quantity", quantity}, {"method", method},
+    const double exact = volume ? quadrature::exact::exact_volume(g, degree) : quadrature::exact::exact_area(g, degree);
+    nlohmann::json report = {{"program", "iga-quadrature"}, {"basis", basis}, {"mesh", mesh}, {"quantity", quantity}, {"method", method},
                              {"elements", g.space().num_elements()}, {"exact", exact}};
     Index irregular = 0, ev_points = 0;
     double value = exact;

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "basis/catmull_clark/exact_view.hpp"
 #include "basis/catmull_clark/regular_patch.hpp"
 
 namespace iga::basis::catmull_clark {
@@ -73,6 +74,7 @@ std::shared_ptr<const IrregularConfig> build_config(const QuadMesh& l1) {
     }
     power = (power * c->subdivision).eval();
     power_b = (power_b * b).eval();
+    if (j == 0) c->view = quad_view(c->subdivision, c->limit, c->tile_ops[0]);
   }
   return c;
 }

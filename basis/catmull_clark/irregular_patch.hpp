@@ -18,6 +18,7 @@
 
 #include "basis/basis_values.hpp"
 #include "basis/catmull_clark/quad_mesh.hpp"
+#include "basis/subdivision_view.hpp"
 
 namespace iga::basis::catmull_clark {
 
@@ -31,6 +32,7 @@ struct IrregularConfig {
   /// that their rounding error decays like λ^j instead of growing like 2^j (Σ ∇φ = 0 to rounding at depth).
   std::vector<std::array<Eigen::MatrixXd, 3>> tile_ops_deriv;
   Eigen::VectorXd limit;  ///< limit-point stencil w of the EV on L1 (m): w^T A = w^T, Σ w = 1
+  SubdivisionView view;   ///< the same for exact integration (exact_view.hpp): A, w, E_k = tile_ops[0]
 };
 
 /// Cached by the combinatorics of the level-1 one-ring; thread-safe.

@@ -1,5 +1,7 @@
 #include "basis/catmull_clark/space.hpp"
 
+#include "basis/catmull_clark/exact_view.hpp"
+
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -214,6 +216,15 @@ Geometry make_catmull_clark_geometry(const mesh::PolyMesh& mesh, const std::stri
   Eigen::MatrixXd cp(net.num_vertices(), dim);
   for (Index v = 0; v < net.num_vertices(); ++v) cp.row(v) = net.point(v).head(dim).transpose();
   return Geometry(space, std::move(cp));
+}
+
+std::optional<SubdivisionElement> CatmullClarkSpace::subdivision_element(Index e) const {
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  if (el.stam) return SubdivisionElement{&stam_view(el.stam->valence()), el.stam_map, 0, {}};
+  if (!el.irregular) return std::nullopt;
+  SubdivisionElement s{&el.irregular->config->view, el.irregular->level1, 1, {}};
+  for (const auto& t : el.irregular->level0) s.explicit_tiles.push_back({t, 2.0 * Eigen::Matrix2d::Identity()});
+  return s;
 }
 
 }  // namespace iga::basis::catmull_clark

@@ -75,6 +75,9 @@ class CatmullClarkSpace final : public Space {
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override { return boundary_edges_; }
   std::vector<std::string> boundary_part_names() const override { return part_names_; }
+  /// Stam elements: stam_view(n) with to_points = stam_map(e); boundary-EV elements: their configuration's
+  /// view on level1, shift 1, the three level-0 tiles explicit.
+  std::optional<SubdivisionElement> subdivision_element(Index e) const override;
 
   /// For exact integration (quadrature/exact): Stam's evaluator of element e, or nullptr unless e is
   /// evaluated by Stam's method; then stam_map(e) ((2n+8) × dofs(e).size()) maps the coefficients of dofs(e)

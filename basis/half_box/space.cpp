@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "basis/half_box/exact_view.hpp"
 #include "basis/half_box/irregular_patch.hpp"
 #include "basis/half_box/patch_net.hpp"
 #include "basis/half_box/subdivision.hpp"
@@ -82,6 +83,13 @@ std::span<const Index> HalfBoxSpace::dofs(Index e) const { return elements_[stat
 
 void HalfBoxSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
   evaluate_patch(elements_[static_cast<std::size_t>(e)].kind.valence, pts, derivatives, out);
+}
+
+std::optional<SubdivisionElement> HalfBoxSpace::subdivision_element(Index e) const {
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  if (el.kind.family != Family::Irregular) return std::nullopt;
+  const auto m = static_cast<Index>(el.dofs.size());
+  return SubdivisionElement{&half_box_view(el.kind.valence), Eigen::MatrixXd::Identity(m, m), 0, {}};
 }
 
 Geometry make_half_box_geometry(const mesh::PolyMesh& net, const std::string& name) {

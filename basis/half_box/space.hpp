@@ -43,6 +43,8 @@ class HalfBoxSpace final : public Space {
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override { return boundary_; }
   std::vector<std::string> boundary_part_names() const override { return {"boundary"}; }
+  /// EF elements: half_box_view(n) on the element's own n + 7 points (exact_view.hpp).
+  std::optional<SubdivisionElement> subdivision_element(Index e) const override;
 
   /// The control net (after the subdivision step that separates extraordinary faces, if one was needed).
   const mesh::PolyMesh& control_net() const { return net_; }

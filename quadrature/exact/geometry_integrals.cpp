@@ -1,11 +1,9 @@
 #include "quadrature/exact/geometry_integrals.hpp"
 
-#include <map>
-#include <mutex>
+#include <string>
 
-#include "basis/catmull_clark/space.hpp"
 #include "core/error.hpp"
-#include "quadrature/exact/irregular_integrals.hpp"
+#include "quadrature/exact/subdivision_integrals.hpp"
 #include "quadrature/gauss_legendre.hpp"
 #include "quadrature/tensor_rule.hpp"
 
@@ -13,18 +11,12 @@ namespace iga::quadrature::exact {
 
 namespace {
 
-using basis::catmull_clark::CatmullClarkSpace;
-using basis::catmull_clark::IrregularConfig;
-using basis::catmull_clark::IrregularElement;
-
-const CatmullClarkSpace& cc_space(const basis::Geometry& g, int dim, const char* what) {
-  const auto* cc = dynamic_cast<const CatmullClarkSpace*>(&g.space());
-  if (cc == nullptr) throw InputError(std::string(what) + ": the geometry is not on a Catmull–Clark space");
+void check(const basis::Geometry& g, int dim, int degree, const char* what) {
   if (g.dim() != dim) {
     throw InputError(std::string(what) + ": needs a " + (dim == 2 ? "planar (dim 2)" : "3D surface (dim 3)") +
                      " geometry, got dim " + std::to_string(g.dim()));
   }
-  return *cc;
+  if (degree < 1 || degree > 20) throw InputError(std::string(what) + ": degree must be 1..20, got " + std::to_string(degree));
 }
 
 Eigen::MatrixXd local_coordinates(const basis::Geometry& g, Index e) {
@@ -32,43 +24,6 @@ Eigen::MatrixXd local_coordinates(const basis::Geometry& g, Index e) {
   Eigen::MatrixXd x(static_cast<Eigen::Index>(dofs.size()), g.dim());
   for (std::size_t i = 0; i < dofs.size(); ++i) x.row(static_cast<Eigen::Index>(i)) = g.control_points().row(dofs[i]);
   return x;
-}
-
-// ∫ ∂u φ_a ∂v φ_b (dofs × dofs) of a boundary-EV element: level-0 tiles (area 1/4, derivative factor 2 each)
-// plus levels l >= 1 (tiles E_k A^(l-1) A0 G, area 4^-(l+1), factor 2^(l+1) each): both products are 1.
-Eigen::MatrixXd irregular_duv(const IrregularElement& el, std::map<const IrregularConfig*, Eigen::MatrixXd>& cache) {
-  const Eigen::MatrixXd g01 = tile_gram(0, 1);
-  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(el.level1.cols(), el.level1.cols());
-  for (const auto& t : el.level0) d.noalias() += t.transpose() * g01 * t;
-  auto it = cache.find(el.config.get());
-  if (it == cache.end()) {
-    const IrregularConfig& c = *el.config;
-    it = cache.emplace(el.config.get(), level_series(c.tile_ops[0], c.subdivision, c.limit, 0, 1)).first;
-  }
-  d.noalias() += el.level1.transpose() * it->second * el.level1;
-  return d;
-}
-
-// ∫ φ_a ∂u φ_b ∂v φ_c of a boundary-EV element (factors 1/4 · 2 · 2 = 1 on every level).
-Tensor3 irregular_triple(const IrregularElement& el) {
-  const Tensor3 t16 = tile_triple(-1, 0, 1);
-  Tensor3 t(static_cast<std::size_t>(el.level1.cols()), Eigen::MatrixXd::Zero(el.level1.cols(), el.level1.cols()));
-  auto add = [&](const Tensor3& s) {
-    for (std::size_t i = 0; i < t.size(); ++i) t[i] += s[i];
-  };
-  for (const auto& m : el.level0) add(contract(t16, m, m, m));
-  const IrregularConfig& c = *el.config;
-  add(contract(level_series_triple(c.tile_ops[0], c.subdivision, c.limit, -1, 0, 1), el.level1, el.level1, el.level1));
-  return t;
-}
-
-const Tensor3& stam_triple(int n) {
-  static std::mutex mutex;
-  static std::map<int, Tensor3> cache;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = cache.find(n);
-  if (it == cache.end()) it = cache.emplace(n, triple(n, -1, 0, 1)).first;
-  return it->second;
 }
 
 double triple_form(const Tensor3& t, const Eigen::VectorXd& z, const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
@@ -79,6 +34,17 @@ double triple_form(const Tensor3& t, const Eigen::VectorXd& z, const Eigen::Vect
   }
   return s;
 }
+
+// The two Gauss rules of a polynomial element with `points` per direction: square and collapsed triangle.
+struct PolynomialRules {
+  Rule quad, triangle;
+  explicit PolynomialRules(int points) {
+    const Rule1D line = gauss_legendre(points);
+    quad = tensor_rule(line, line);
+    triangle = collapsed_triangle_rule(line, line);
+  }
+  const Rule& of(const basis::ElementKind& k) const { return k.shape == basis::Shape::Quad ? quad : triangle; }
+};
 
 double gauss_sum(const basis::Geometry& g, Index e, const Rule& rule, bool volume) {
   basis::GeometryValues gv;
@@ -91,53 +57,48 @@ double gauss_sum(const basis::Geometry& g, Index e, const Rule& rule, bool volum
   return s;
 }
 
+// The subdivision view of an irregular element; UnsupportedError naming it when there is none.
+basis::SubdivisionElement subdivision_of(const basis::Space& space, Index e, const char* what) {
+  auto se = space.subdivision_element(e);
+  if (!se) {
+    throw UnsupportedError(std::string(what) + ": element " + std::to_string(e + 1) + " (" +
+                           basis::to_string(space.kind(e)) + ") has no exact integration data");
+  }
+  return std::move(*se);
+}
+
 }  // namespace
 
-double exact_area(const basis::Geometry& g) {
-  const CatmullClarkSpace& cc = cc_space(g, 2, "exact_area");
-  const Rule1D g3 = gauss_legendre(3);
-  const Rule rule = tensor_rule(g3, g3);
-  std::map<const IrregularConfig*, Eigen::MatrixXd> cache;
+double exact_area(const basis::Geometry& g, int degree) {
+  check(g, 2, degree, "exact_area");
+  const basis::Space& space = g.space();
+  const PolynomialRules rules(degree);
   double area = 0;
-  for (Index e = 0; e < cc.num_elements(); ++e) {
-    if (cc.kind(e).family == basis::Family::Regular) {
-      area += gauss_sum(g, e, rule, false);
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    if (space.kind(e).family != basis::Family::Irregular) {
+      area += gauss_sum(g, e, rules.of(space.kind(e)), false);
       continue;
     }
+    const Eigen::MatrixXd d = element_gram(subdivision_of(space, e, "exact_area"), 0, 1);
     const Eigen::MatrixXd xy = local_coordinates(g, e);
-    if (const auto* st = cc.stam(e)) {
-      const Eigen::MatrixXd& d = irregular_integrals(st->valence()).d[0][1];
-      const Eigen::VectorXd x = cc.stam_map(e) * xy.col(0), y = cc.stam_map(e) * xy.col(1);
-      area += x.dot(d * y) - y.dot(d * x);
-    } else if (const auto* el = cc.irregular(e)) {
-      const Eigen::MatrixXd d = irregular_duv(*el, cache);
-      area += xy.col(0).dot(d * xy.col(1)) - xy.col(1).dot(d * xy.col(0));
-    } else {
-      throw UnsupportedError("exact_area: element " + std::to_string(e) + " has no exact integration data");
-    }
+    area += xy.col(0).dot(d * xy.col(1)) - xy.col(1).dot(d * xy.col(0));
   }
   return area;
 }
 
-double exact_volume(const basis::Geometry& g) {
-  const CatmullClarkSpace& cc = cc_space(g, 3, "exact_volume");
-  const Rule1D g5 = gauss_legendre(5);
-  const Rule rule = tensor_rule(g5, g5);
+double exact_volume(const basis::Geometry& g, int degree) {
+  check(g, 3, degree, "exact_volume");
+  const basis::Space& space = g.space();
+  const PolynomialRules rules((3 * degree + 1) / 2);
   double volume = 0;
-  for (Index e = 0; e < cc.num_elements(); ++e) {
-    if (cc.kind(e).family == basis::Family::Regular) {
-      volume += gauss_sum(g, e, rule, true);
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    if (space.kind(e).family != basis::Family::Irregular) {
+      volume += gauss_sum(g, e, rules.of(space.kind(e)), true);
       continue;
     }
+    const Tensor3 t = element_triple(subdivision_of(space, e, "exact_volume"), -1, 0, 1);
     const Eigen::MatrixXd p = local_coordinates(g, e);
-    if (const auto* st = cc.stam(e)) {
-      const Eigen::MatrixXd loc = cc.stam_map(e) * p;
-      volume += triple_form(stam_triple(st->valence()), loc.col(2), loc.col(0), loc.col(1));
-    } else if (const auto* el = cc.irregular(e)) {
-      volume += triple_form(irregular_triple(*el), p.col(2), p.col(0), p.col(1));
-    } else {
-      throw UnsupportedError("exact_volume: element " + std::to_string(e) + " has no exact integration data");
-    }
+    volume += triple_form(t, p.col(2), p.col(0), p.col(1));
   }
   return volume;
 }

@@ -6,9 +6,11 @@
 #include <mutex>
 #include <string>
 
+#include "basis/catmull_clark/exact_view.hpp"
 #include "basis/catmull_clark/stam.hpp"
 #include "basis/catmull_clark/subdivision_matrix.hpp"
 #include "core/error.hpp"
+#include "quadrature/exact/subdivision_integrals.hpp"
 
 namespace iga::quadrature::exact {
 
@@ -16,10 +18,11 @@ namespace {
 
 using basis::catmull_clark::StamEvaluator;
 
-int num_derivatives(std::initializer_list<Factor> fs) {
-  int d = 0;
-  for (Factor f : fs) d += f >= 0 ? 1 : 0;
-  return d;
+
+// Stam's element of valence n on its own 2n+8 points (the scheme-neutral view, exact_view.hpp).
+basis::SubdivisionElement stam_element(int n) {
+  const int m = 2 * n + 8;
+  return {&basis::catmull_clark::stam_view(n), Eigen::MatrixXd::Identity(m, m), 0, {}};
 }
 
 // E_k = X^k Ā (16 × (2n+8)): tile k of level 1 in terms of the level-0 points.
@@ -30,46 +33,16 @@ std::array<Eigen::MatrixXd, 3> stam_tiles(const StamEvaluator& st) {
 }
 
 IrregularIntegrals compute(int n) {
-  const StamEvaluator& st = basis::catmull_clark::stam_evaluator(n);
-  const auto tiles = stam_tiles(st);
-  const Eigen::MatrixXd& a = st.subdivision_matrix();
-  const Eigen::VectorXd& w = st.limit_stencil();
+  const basis::SubdivisionElement el = stam_element(n);
   IrregularIntegrals r;
-  // Level l: area 4^-l, tiles E_k A^(l-1): sum_l 4^-l (A^(l-1))^T c = (1/4) sum_j (1/4)^j (A^T)^j c.
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(a.rows());
-  const Eigen::VectorXd m = tile_integral(-1);
-  for (const auto& e : tiles) c += e.transpose() * m;
-  r.phi = 0.25 * linear_series(a, c, 0.25);
-  r.phi_phi = 0.25 * level_series(tiles, a, w, -1, -1);
+  r.phi = element_integral(el);
+  r.phi_phi = element_gram(el, -1, -1);
   for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j) r.d[i][j] = level_series(tiles, a, w, i, j);  // 4^-l 2^l 2^l = 1
+    for (int j = 0; j < 2; ++j) r.d[i][j] = element_gram(el, i, j);
   return r;
 }
 
 }  // namespace
-
-Eigen::MatrixXd level_series(const std::array<Eigen::MatrixXd, 3>& tiles, const Eigen::MatrixXd& a,
-                             const Eigen::VectorXd& w, Factor f, Factor g) {
-  const Eigen::MatrixXd gram = tile_gram(f, g);
-  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(a.rows(), a.cols());
-  for (const auto& e : tiles) c.noalias() += e.transpose() * gram * e;
-  const Eigen::MatrixXd b = deflate_constant(a, w);
-  const double s = std::ldexp(1.0, num_derivatives({f, g}) - 2);
-  return stein(f >= 0 ? b : a, c, g >= 0 ? b : a, s);
-}
-
-Tensor3 level_series_triple(const std::array<Eigen::MatrixXd, 3>& tiles, const Eigen::MatrixXd& a,
-                            const Eigen::VectorXd& w, Factor f, Factor g, Factor h) {
-  const Tensor3 t16 = tile_triple(f, g, h);
-  Tensor3 c(static_cast<std::size_t>(a.rows()), Eigen::MatrixXd::Zero(a.rows(), a.cols()));
-  for (const auto& e : tiles) {
-    const Tensor3 ck = contract(t16, e, e, e);
-    for (std::size_t i = 0; i < c.size(); ++i) c[i] += ck[i];
-  }
-  const Eigen::MatrixXd b = deflate_constant(a, w);
-  const double s = std::ldexp(1.0, num_derivatives({f, g, h}) - 2);
-  return triple_series(c, f >= 0 ? b : a, g >= 0 ? b : a, h >= 0 ? b : a, s);
-}
 
 const IrregularIntegrals& irregular_integrals(int n) {
   basis::catmull_clark::check_valence(n);
@@ -133,11 +106,7 @@ std::array<std::array<Eigen::MatrixXd, 3>, 3> second_derivative_products(int n) 
 
 Tensor3 triple(int n, Factor da, Factor db, Factor dc) {
   basis::catmull_clark::check_valence(n);
-  const StamEvaluator& st = basis::catmull_clark::stam_evaluator(n);
-  const double s = std::ldexp(1.0, num_derivatives({da, db, dc}) - 2);
-  Tensor3 t = level_series_triple(stam_tiles(st), st.subdivision_matrix(), st.limit_stencil(), da, db, dc);
-  for (auto& m : t) m *= s;
-  return t;
+  return element_triple(stam_element(n), da, db, dc);
 }
 
 }  // namespace iga::quadrature::exact

@@ -39,16 +39,4 @@ std::array<std::array<Eigen::MatrixXd, 3>, 3> second_derivative_products(int n);
 /// subdominant eigenvalue); three derivatives: 2 λ1³ < 1 (λ1 <= 0.65 for n <= 16). InputError for bad factors.
 Tensor3 triple(int n, Factor da, Factor db, Factor dc);
 
-/// The level sum for a repeating configuration: with tiles[k] = E_k (16 × m, the bicubic tile nets of one
-/// level in terms of that level's points), A (m × m) the subdivision of those points and w the limit stencil,
-/// returns sum_{j >= 0} s^j (P^j)^T C (Q^j)  with C = sum_k E_k^T G_fg E_k, s = 2^#derivatives / 4, P = A for a
-/// value factor f and A - 1 w^T for a derivative, likewise Q for g. The caller multiplies by the level-1
-/// area/derivative factor.
-Eigen::MatrixXd level_series(const std::array<Eigen::MatrixXd, 3>& tiles, const Eigen::MatrixXd& a,
-                             const Eigen::VectorXd& w, Factor f, Factor g);
-
-/// The same for triple products.
-Tensor3 level_series_triple(const std::array<Eigen::MatrixXd, 3>& tiles, const Eigen::MatrixXd& a,
-                            const Eigen::VectorXd& w, Factor f, Factor g, Factor h);
-
 }  // namespace iga::quadrature::exact

@@ -4,4 +4,5 @@ set(IGA_QUADRATURE_EXACT_SOURCES
   exact/tile_integrals.cpp
   exact/irregular_integrals.cpp
   exact/geometry_integrals.cpp
+  exact/subdivision_integrals.cpp
 )

@@ -8,6 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "mesh/obj_reader.hpp"
+#include "mesh/obj_writer.hpp"
+#include "mesh/three_valent.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -122,12 +126,36 @@ TEST(IgaQuadrature, MacroRuleOnRingSumsOfTheStiffnessMatrix) {
   EXPECT_LT(m.report["points_around_evs"].get<int>(), t.report["points_around_evs"].get<int>());
 }
 
+// --basis halfbox on the dual of the square triangulation (written here): the exact area (geometric series at
+// the extraordinary faces) against the per-tile rule at 16 levels; macro rules are for Catmull–Clark elements
+// and refuse half-box ones with one line.
+TEST(IgaQuadrature, HalfBoxAreaExactAndPerTile) {
+  const fs::path obj = fs::temp_directory_path() / ("iga_quadrature_halfbox_" + std::to_string(::getpid()) + ".obj");
+  iga::mesh::write_obj(iga::mesh::dual_net(iga::mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/tri_square.obj")),
+                       obj.string());
+  const std::string mesh = "--basis halfbox --mesh '" + obj.string() + "' --quantity area";
+  const Outcome e = run(mesh + " --method exact");
+  ASSERT_EQ(e.code, 0) << e.err;
+  EXPECT_EQ(e.report["basis"], "halfbox");
+  EXPECT_GT(e.report["irregular_elements"].get<int>(), 0);
+  const Outcome t = run(mesh + " --method tiles:4:16");
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_NEAR(t.report["value"].get<double>(), e.report["exact"].get<double>(), 1e-12);
+  const Outcome m = run(mesh + " --method macro:2");
+  EXPECT_EQ(m.code, 1);
+  EXPECT_NE(m.err.find("(half-box)"), std::string::npos) << m.err;
+  EXPECT_EQ(std::count(m.err.begin(), m.err.end(), '\n'), 1) << m.err;
+  fs::remove(obj);
+}
+
 TEST(IgaQuadrature, BadInputGivesOneLine) {
   for (const std::string& args : {net("cube.obj") + " --quantity area", net("square_evs.obj") + " --quantity volume",
                                   net("square_evs.obj") + " --method simpson:3", std::string("--quantity mass"),
                                   std::string("--quantity area --valence 5"), std::string("--quantity mass --valence 2"),
                                   net("square_evs.obj") + " --quantity mass --valence 5",
-                                  std::string("--quantity stiffness --valence 5 --method fitted:mass:/nonexistent/iga")}) {
+                                  std::string("--quantity stiffness --valence 5 --method fitted:mass:/nonexistent/iga"),
+                                  std::string("--quantity mass --valence 5 --basis halfbox"),
+                                  net("square_evs.obj") + " --basis halfbox --quantity area"}) {
     const Outcome o = run(args);
     EXPECT_NE(o.code, 0) << args;
     EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
