@@ -1,6 +1,7 @@
-// Registration of the half-box spline backend (basis/registry.hpp). Closed nets refine by one subdivision step
-// per level (nested, with the prolongation of the step); nets with a boundary are refined as nets and the
-// space rebuilt (the receding boundary moves, so those spaces are not nested).
+// Registration of the half-box spline backend (basis/registry.hpp). Refinement is one subdivision step of the
+// net per level; the spaces are nested (closed nets and nets with a receding boundary alike), with the
+// prolongation of the steps on the dofs.
+#include <cmath>
 #include <memory>
 
 #include "basis/half_box/regular_patch.hpp"
@@ -30,44 +31,49 @@ Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFac
   return g;
 }
 
-// The net with the geometry's control points at the vertices that are dofs.
-mesh::PolyMesh current_net(const Geometry& geometry) {
-  const auto& space = half_box_of(geometry);
-  return net_with_control_points(space.control_net(), geometry, [&](Index d) { return space.vertex(d); });
-}
-
-// Refinement of a net with a boundary: subdivision steps of the open net (the receding boundary stays).
-mesh::PolyMesh refine_open_net(const mesh::PolyMesh& net, int steps, BackendFacts& facts) {
-  facts.counts["halfbox_net_steps"] += steps;
-  mesh::PolyMesh out = net;
-  for (int s = 0; s < steps; ++s) out = out.is_closed() ? half_box::subdivide(out).net : half_box::subdivide_local(out).net;
-  return out;
+// One subdivision step (closed nets: subdivide; nets with a boundary: subdivide_local, which keeps the
+// patches of the receding boundary and so the domain) and its prolongation on the dofs: the step's vertex
+// prolongation restricted to the fine dofs' rows and the coarse dofs' columns. The fine patches lie inside
+// the coarse ones and their points come from the coarse patches' points, so every such row sums to one on
+// the coarse dofs (checked): the spaces are nested.
+Refinement one_step(const Geometry& geometry) {
+  const HalfBoxSpace& coarse = half_box_of(geometry);
+  const mesh::PolyMesh& net = coarse.control_net();
+  half_box::NetSubdivision step = net.is_closed() ? half_box::subdivide(net) : half_box::subdivide_local(net);
+  auto fine = std::make_shared<const HalfBoxSpace>(step.net, "refined net");
+  if (fine->refinement_steps() != 0) throw NumericalError("refined half-box net needed another separation step");
+  std::vector<Index> dof_of_vertex(static_cast<std::size_t>(net.num_vertices()), -1);
+  for (Index d = 0; d < coarse.num_dofs(); ++d) dof_of_vertex[static_cast<std::size_t>(coarse.vertex(d))] = d;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> pv = step.prolongation;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Index i = 0; i < fine->num_dofs(); ++i) {
+    double sum = 0.0;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(pv, fine->vertex(i)); it; ++it) {
+      const Index j = dof_of_vertex[static_cast<std::size_t>(it.col())];
+      if (j < 0) continue;
+      entries.emplace_back(i, j, it.value());
+      sum += it.value();
+    }
+    if (std::abs(sum - 1.0) > 1e-12) {
+      throw NumericalError("half-box refinement: fine dof " + std::to_string(i + 1) + " depends on net vertices that are no coarse dof");
+    }
+  }
+  Eigen::SparseMatrix<double> p(fine->num_dofs(), coarse.num_dofs());
+  p.setFromTriplets(entries.begin(), entries.end());
+  Eigen::MatrixXd cp = p * geometry.control_points();
+  return {Geometry(fine, std::move(cp)), std::move(p), true};
 }
 
 Refinement refine(const Geometry& geometry, int steps, BackendFacts& facts) {
-  const HalfBoxSpace& space = half_box_of(geometry);
-  if (!space.control_net().is_closed()) {
-    Geometry fine = half_box::make_half_box_geometry(refine_open_net(current_net(geometry), steps, facts), "refined net");
-    return {std::move(fine), Eigen::SparseMatrix<double>(), false};
-  }
-  // Closed: every vertex is a dof (in vertex order), so the step's prolongation acts on the coefficients.
   facts.counts["halfbox_net_steps"] += steps;
-  mesh::PolyMesh net = space.control_net();
-  Eigen::SparseMatrix<double> total;
-  for (int s = 0; s < steps; ++s) {
-    half_box::NetSubdivision step = half_box::subdivide(net);
-    if (s == 0) {
-      total = std::move(step.prolongation);
-    } else {
-      Eigen::SparseMatrix<double> composed = step.prolongation * total;
-      total.swap(composed);
-    }
-    net = std::move(step.net);
+  Refinement out = one_step(geometry);
+  for (int s = 1; s < steps; ++s) {
+    Refinement next = one_step(out.geometry);
+    Eigen::SparseMatrix<double> composed = next.prolongation * out.prolongation;
+    out.geometry = next.geometry;
+    out.prolongation.swap(composed);
   }
-  auto fine = std::make_shared<const HalfBoxSpace>(net, "refined net");
-  if (fine->num_dofs() != total.rows()) throw NumericalError("refined half-box net: dofs and prolongation disagree");
-  Eigen::MatrixXd cp = total * geometry.control_points();
-  return {Geometry(fine, std::move(cp)), std::move(total), true};
+  return out;
 }
 
 // Regular elements are cubic Bézier triangles: c = bezier_matrix() · P. EF elements are not polynomial
@@ -101,10 +107,8 @@ Backend half_box_backend() {
   b.description = "half-box splines on a three-valent net (triangular elements, exact evaluation at extraordinary faces)";
   b.default_degree = 3;
   b.default_refine = 1;
-  // Closed nets are nested (refine gives the prolongation); nets with a boundary are refined as nets and the
-  // space rebuilt (nested = false in the Refinement). The net is built first, so --refine counts the steps
-  // after the one that separates extraordinary faces.
-  b.nested = false;
+  // The net is built first, so --refine counts the steps after the one that separates extraordinary faces.
+  b.nested = true;
   b.from_net = from_net;
   b.refine = refine;
   b.default_quadrature = [](int) { return std::string("tiles:4:10"); };

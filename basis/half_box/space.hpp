@@ -12,11 +12,12 @@
 // Nets where two extraordinary faces meet at a vertex get one subdivision step first (refinement_steps() == 1,
 // as Catmull–Clark does for its nets); the refined net is then the control net.
 //
-// Boundary: the thesis's double-knot boundary rule is not implemented. A net with a boundary gives the patches
-// of the vertices that have three faces, so the domain recedes from the net's outer layer (as for the
-// polyhedral backend); the boundary is made of the patch sides whose neighbour vertex has no patch, one part
-// "boundary". The boundary curves depend on interior rows of control points; Dirichlet data then become
-// coupled constraints (fem/dirichlet.hpp).
+// Boundary: a net with a boundary gives the patches of the vertices that have three faces, so the domain
+// recedes from the net's outer layer (as for the polyhedral backend); the boundary is made of the patch sides
+// whose neighbour vertex has no patch, one part "boundary". Subdivision (subdivide_local) keeps this domain,
+// so refined spaces are nested. The boundary curves depend on interior rows of control points; Dirichlet data
+// then become coupled constraints (fem/dirichlet.hpp). The thesis's boundary-interpolating double-knot rule
+// is not implemented.
 #include <memory>
 #include <span>
 #include <string>
