@@ -132,16 +132,18 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
                                   Eigen::VectorXd* b) const {
   const basis::Space& space = geometry_.space();
   const Index n = space.num_dofs();
-  const quadrature::Rule1D& line = rules_.edge_rule();
-  const Index q = line.size();
   std::vector<Eigen::Triplet<double>> entries;
   if (b) *b = Eigen::VectorXd::Zero(n);
   BoundaryContext ctx;
-  Eigen::Matrix2Xd pts(2, q);
+  Eigen::Matrix2Xd pts;
   Eigen::MatrixXd k;
   Eigen::VectorXd f;
   for (const basis::BoundaryEdge& edge : edges) {
-    const basis::Shape shape = space.kind(edge.element).shape;
+    const basis::ElementKind kind = space.kind(edge.element);
+    const basis::Shape shape = kind.shape;
+    const quadrature::Rule1D& line = rules_.side_rule(kind, edge.side);
+    const Index q = line.size();
+    pts.resize(2, q);
     for (Index i = 0; i < q; ++i) pts.col(i) = basis::side_point(shape, edge.side, line.points(i));
     const Eigen::Vector2d dt = basis::side_tangent(shape, edge.side);
     ctx.element = edge.element;

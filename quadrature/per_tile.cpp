@@ -67,11 +67,48 @@ Rule tiled_rule(int p, int levels) {
       [&](double h) { return square(0.0, 0.0, h); });
 }
 
+Rule1D dyadic_line_rule(int p, int levels, bool toward_zero) {
+  if (levels < 1 || levels > 50) throw InputError("tiled rule: levels must be 1..50, got " + std::to_string(levels));
+  const Rule1D line = gauss_legendre(p);
+  Rule1D out;
+  out.points.resize((levels + 1) * p);
+  out.weights.resize((levels + 1) * p);
+  Eigen::Index k = 0;
+  auto piece = [&](double a, double h) {
+    for (Eigen::Index i = 0; i < p; ++i, ++k) {
+      const double t = a + h * line.points(i);
+      out.points(k) = toward_zero ? t : 1.0 - t;
+      out.weights(k) = h * line.weights(i);
+    }
+  };
+  for (int l = 1; l <= levels; ++l) piece(std::ldexp(1.0, -l), std::ldexp(1.0, -l));
+  piece(0.0, std::ldexp(1.0, -levels));
+  return out;
+}
+
 PerTile::PerTile(int points_per_direction, int levels)
     : gauss_(points_per_direction),
       levels_(levels),
       tiled_(tiled_rule(points_per_direction, levels)),
-      tiled_triangle_(tiled_triangle_rule(points_per_direction, levels)) {}
+      tiled_triangle_(tiled_triangle_rule(points_per_direction, levels)) {
+  // Side 1 of a half-box EF triangle lies in layer 1 and crosses tiles 0 and 1 at t = 1/2.
+  const Rule1D line = gauss_legendre(points_per_direction);
+  Rule1D halves;
+  halves.points.resize(2 * line.size());
+  halves.weights.resize(2 * line.size());
+  halves.points << 0.5 * line.points, 0.5 + 0.5 * line.points.array();
+  halves.weights << 0.5 * line.weights, 0.5 * line.weights;
+  half_box_sides_ = {dyadic_line_rule(points_per_direction, levels, true), halves,
+                     dyadic_line_rule(points_per_direction, levels, false)};
+}
+
+const Rule1D& PerTile::side_rule(const basis::ElementKind& kind, int side) const {
+  if (kind.shape == basis::Shape::Triangle && kind.family == basis::Family::Irregular &&
+      kind.scheme == basis::Scheme::HalfBox && side >= 0 && side < 3) {
+    return half_box_sides_[static_cast<std::size_t>(side)];
+  }
+  return edge_rule();
+}
 
 const Rule& PerTile::rule(const basis::ElementKind& kind) const {
   if (is_catmull_clark_irregular(kind)) return tiled_;

@@ -1,5 +1,6 @@
 #pragma once
 // Per-tile Gauss rules for elements at an extraordinary vertex (thesis §4.2.1, option 2).
+#include <array>
 #include <string>
 
 #include "quadrature/rule_provider.hpp"
@@ -24,14 +25,22 @@ Rule tiled_rule(int p, int levels);
 /// (3·levels + 1)·p² points.
 Rule tiled_triangle_rule(int p, int levels);
 
+/// p-point Gauss on each piece [2^-l, 2^(1-l)], l = 1..levels, and on [0, 2^-levels] of [0, 1] (toward_zero),
+/// or on the mirrored pieces of [1 − 2^(1-l), 1 − 2^-l] and [1 − 2^-levels, 1]: the tiles along a side that runs
+/// into an extraordinary corner. (levels + 1)·p points.
+Rule1D dyadic_line_rule(int p, int levels, bool toward_zero);
+
 /// PerTile(p, levels): the tiled rule on irregular Catmull–Clark quads, the tiled triangle rule on irregular
 /// half-box triangles, p × p Gauss on polynomial quads, the collapsed rule on polynomial triangles, p points
-/// on sides; UnsupportedError naming any other irregular kind. Name "tiles:P:L".
+/// on sides; UnsupportedError naming any other irregular kind. Sides of irregular half-box triangles follow
+/// their tiles: side 0 (from the EF corner) and side 2 (into it) by dyadic_line_rule, side 1 by p points on
+/// each half. Name "tiles:P:L".
 class PerTile final : public RuleProvider {
  public:
   PerTile(int points_per_direction, int levels);
   const Rule& rule(const basis::ElementKind& kind) const override;
   const Rule1D& edge_rule() const override { return gauss_.edge_rule(); }
+  const Rule1D& side_rule(const basis::ElementKind& kind, int side) const override;
   std::string name() const override;
   int levels() const { return levels_; }
 
@@ -39,6 +48,7 @@ class PerTile final : public RuleProvider {
   Gauss gauss_;
   int levels_;
   Rule tiled_, tiled_triangle_;
+  std::array<Rule1D, 3> half_box_sides_;
 };
 
 }  // namespace iga::quadrature

@@ -16,6 +16,9 @@ class RuleProvider {
   virtual const Rule& rule(const basis::ElementKind& kind) const = 0;
   /// The rule on [0,1] for element sides (boundary integrals).
   virtual const Rule1D& edge_rule() const = 0;
+  /// The rule on [0,1] for side `side` of an element of this kind (side parameter of basis::side_point): by
+  /// default edge_rule(); providers with tile rules split sides that run into an extraordinary corner.
+  virtual const Rule1D& side_rule(const basis::ElementKind&, int) const { return edge_rule(); }
   /// The specification string, e.g. "gauss:4".
   virtual std::string name() const = 0;
 };

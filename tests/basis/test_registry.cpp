@@ -198,4 +198,13 @@ TEST(Registry, FactsOfTheBuild) {
     if (key.starts_with("patches_per_configuration/")) patches += n;
   }
   EXPECT_EQ(patches, pg.space().num_elements());
+  // Half-box: the dual of the L-shape triangulation has boundary faces that are not hexagons next to other
+  // extraordinary faces, so one subdivision step separates them first (and says so); the square's needs none.
+  for (const auto& [file, steps] : {std::pair{"tri_l_shape.obj", 1}, std::pair{"tri_square.obj", 0}}) {
+    const mesh::PolyMesh three_valent = mesh::dual_net(mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/" + file));
+    BackendFacts hf;
+    make_geometry(backend("halfbox"), &three_valent, BackendOptions{}, hf);
+    EXPECT_EQ(hf.counts.at("halfbox_separation_steps"), steps) << file;
+    EXPECT_EQ(hf.notes.size(), static_cast<std::size_t>(steps)) << file;
+  }
 }

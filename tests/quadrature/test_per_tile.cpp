@@ -144,3 +144,34 @@ TEST(PerTileTriangle, ProvidersNameTheKindsTheyCannotServe) {
     EXPECT_EQ(p->rule(ElementKind{}).size(), 16);  // polynomial quads: 4 × 4 Gauss
   }
 }
+
+// Sides of half-box EF triangles: the dyadic rule integrates functions that are polynomial on each piece
+// [2^-l, 2^(1-l)] exactly: f = l · t³ (l the piece, L + 1 on [0, 2^-L]), ∫ = Σ_l l (b⁴ − a⁴)/4 over the pieces;
+// the mirrored rule integrates f(1 − t). Side 1 is split at 1/2.
+TEST(PerTileTriangle, SideRulesFollowTheTiles) {
+  const int levels = 9;
+  auto piece = [&](double t) { return std::min(static_cast<int>(std::floor(-std::log2(t))) + 1, levels + 1); };
+  double exact = (levels + 1) * std::pow(std::ldexp(1.0, -levels), 4) / 4.0;
+  for (int l = 1; l <= levels; ++l) exact += l * (std::pow(std::ldexp(1.0, 1 - l), 4) - std::pow(std::ldexp(1.0, -l), 4)) / 4.0;
+  for (const bool toward_zero : {true, false}) {
+    const Rule1D r = dyadic_line_rule(2, levels, toward_zero);
+    EXPECT_EQ(r.size(), 2 * (levels + 1));
+    EXPECT_NEAR(r.weights.sum(), 1.0, 1e-15);
+    double s = 0.0;
+    for (Eigen::Index k = 0; k < r.size(); ++k) {
+      const double t = toward_zero ? r.points(k) : 1.0 - r.points(k);
+      s += r.weights(k) * piece(t) * t * t * t;
+    }
+    EXPECT_NEAR(s, exact, 1e-15) << toward_zero;
+  }
+  const PerTile tiles(2, levels);
+  const iga::basis::ElementKind half_box{iga::basis::Shape::Triangle, iga::basis::Family::Irregular, 5, false,
+                                         iga::basis::Scheme::HalfBox};
+  EXPECT_EQ(tiles.side_rule(half_box, 0).size(), 2 * (levels + 1));
+  EXPECT_EQ(tiles.side_rule(half_box, 2).points(0), 1.0 - tiles.side_rule(half_box, 0).points(0));
+  const Rule1D& mid = tiles.side_rule(half_box, 1);
+  EXPECT_EQ(mid.size(), 4);
+  EXPECT_LT(mid.points(1), 0.5);
+  EXPECT_GT(mid.points(2), 0.5);
+  EXPECT_EQ(&tiles.side_rule(iga::basis::ElementKind{}, 0), &tiles.edge_rule());  // polynomial elements
+}
