@@ -32,34 +32,41 @@ Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFac
 }
 
 // One subdivision step (closed nets: subdivide; nets with a boundary: subdivide_local, which keeps the
-// patches of the receding boundary and so the domain) and its prolongation on the dofs: the step's vertex
-// prolongation restricted to the fine dofs' rows and the coarse dofs' columns. The fine patches lie inside
-// the coarse ones and their points come from the coarse patches' points, so every such row sums to one on
-// the coarse dofs (checked): the spaces are nested.
+// patches of the receding boundary and so the domain) and its prolongation on the dofs: the coarse dof
+// coefficients as vertex coefficients (E), the step's vertex prolongation, the fine space's reduction to its
+// dofs (HalfBoxSpace::from_vertices). The fine patches lie inside the coarse ones and their points come from
+// the coarse patches' points, so every fine patch point's row sums to one on the coarse patch points
+// (checked): the spaces are nested.
 Refinement one_step(const Geometry& geometry) {
   const HalfBoxSpace& coarse = half_box_of(geometry);
   const mesh::PolyMesh& net = coarse.control_net();
   half_box::NetSubdivision step = net.is_closed() ? half_box::subdivide(net) : half_box::subdivide_local(net);
   auto fine = std::make_shared<const HalfBoxSpace>(step.net, "refined net");
   if (fine->refinement_steps() != 0) throw NumericalError("refined half-box net needed another separation step");
-  std::vector<Index> dof_of_vertex(static_cast<std::size_t>(net.num_vertices()), -1);
-  for (Index d = 0; d < coarse.num_dofs(); ++d) dof_of_vertex[static_cast<std::size_t>(coarse.vertex(d))] = d;
+  std::vector<char> coarse_point(static_cast<std::size_t>(net.num_vertices()), 0);
+  std::vector<Eigen::Triplet<double>> e_entries;
+  for (Index d = 0; d < coarse.num_dofs(); ++d) {
+    e_entries.emplace_back(coarse.vertex(d), d, 1.0);
+    coarse_point[static_cast<std::size_t>(coarse.vertex(d))] = 1;
+  }
+  if (coarse.reduced()) coarse_point[static_cast<std::size_t>(coarse.removed_vertex())] = 1;
+  Eigen::SparseMatrix<double> e(net.num_vertices(), coarse.num_dofs());
+  e.setFromTriplets(e_entries.begin(), e_entries.end());
   const Eigen::SparseMatrix<double, Eigen::RowMajor> pv = step.prolongation;
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Index i = 0; i < fine->num_dofs(); ++i) {
+  auto check_row = [&](Index v) {
     double sum = 0.0;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(pv, fine->vertex(i)); it; ++it) {
-      const Index j = dof_of_vertex[static_cast<std::size_t>(it.col())];
-      if (j < 0) continue;
-      entries.emplace_back(i, j, it.value());
-      sum += it.value();
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(pv, v); it; ++it) {
+      if (coarse_point[static_cast<std::size_t>(it.col())]) sum += it.value();
     }
     if (std::abs(sum - 1.0) > 1e-12) {
-      throw NumericalError("half-box refinement: fine dof " + std::to_string(i + 1) + " depends on net vertices that are no coarse dof");
+      throw NumericalError("half-box refinement: fine net vertex " + std::to_string(v + 1) + " depends on net vertices of no coarse patch");
     }
-  }
-  Eigen::SparseMatrix<double> p(fine->num_dofs(), coarse.num_dofs());
-  p.setFromTriplets(entries.begin(), entries.end());
+  };
+  for (Index d = 0; d < fine->num_dofs(); ++d) check_row(fine->vertex(d));
+  if (fine->reduced()) check_row(fine->removed_vertex());
+  Eigen::SparseMatrix<double> pe = step.prolongation * e;
+  Eigen::SparseMatrix<double> p = fine->from_vertices() * pe;
+  p.prune(0.0);
   Eigen::MatrixXd cp = p * geometry.control_points();
   return {Geometry(fine, std::move(cp)), std::move(p), true};
 }
@@ -80,6 +87,7 @@ Refinement refine(const Geometry& geometry, int steps, BackendFacts& facts) {
 // (counted as bv_skipped).
 std::vector<BezierPatch> regular_triangles(const Geometry& geometry, const BackendOptions&, BackendFacts& facts) {
   const Space& space = geometry.space();
+  half_box_of(geometry);
   std::vector<BezierPatch> patches;
   long long skipped = 0;
   Eigen::MatrixXd local;
@@ -93,7 +101,7 @@ std::vector<BezierPatch> regular_triangles(const Geometry& geometry, const Backe
     for (std::size_t k = 0; k < dofs.size(); ++k) {
       local.row(static_cast<Index>(k)).head(geometry.dim()) = geometry.control_points().row(dofs[k]);
     }
-    patches.push_back({"Group 0 HalfBox", true, 3, 3, half_box::bezier_matrix() * local});
+    patches.push_back({"Group 0 HalfBox", true, 3, 3, half_box::bezier_matrix() * (half_box_of(geometry).patch_map(e) * local)});
   }
   facts.counts["bv_skipped"] = skipped;
   return patches;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "basis/half_box/dependency.hpp"
 #include "basis/half_box/exact_view.hpp"
 #include "basis/half_box/irregular_patch.hpp"
 #include "basis/half_box/patch_net.hpp"
@@ -58,15 +59,54 @@ void HalfBoxSpace::build_elements(const std::string& name) {
     elements_.push_back(std::move(el));
   }
   if (elements_.empty()) throw InputError(name, 0, "no net vertex has three faces: the net has no half-box patch");
+  // A global dependency (dependency.hpp): the function of the last used vertex is a combination of the others
+  // and is left out, so the remaining functions are a basis of the same space.
+  std::vector<PatchPoints> patches;
+  for (const Element& el : elements_) patches.push_back({el.kind.valence, &el.dofs});
+  const Eigen::VectorXd c = alternating_dependency(net_, patches);
+  if (c.size() > 0) {
+    for (Index v = net_.num_vertices() - 1; v >= 0 && removed_vertex_ < 0; --v) {
+      if (dof_of_vertex[static_cast<std::size_t>(v)] == 0) removed_vertex_ = v;
+    }
+    dof_of_vertex[static_cast<std::size_t>(removed_vertex_)] = -1;
+  }
   for (Index v = 0; v < net_.num_vertices(); ++v) {
     if (dof_of_vertex[static_cast<std::size_t>(v)] < 0) continue;
     dof_of_vertex[static_cast<std::size_t>(v)] = static_cast<Index>(vertex_of_dof_.size());
     vertex_of_dof_.push_back(v);
+    if (c.size() > 0) dependency_.push_back(c(v) / c(removed_vertex_));
   }
   for (Element& el : elements_) {
-    for (Index& w : el.dofs) w = dof_of_vertex[static_cast<std::size_t>(w)];
+    std::vector<Index> local;
+    for (std::size_t i = 0; i < el.dofs.size(); ++i) {
+      if (el.dofs[i] == removed_vertex_) {
+        el.removed = static_cast<int>(i);
+      } else {
+        local.push_back(dof_of_vertex[static_cast<std::size_t>(el.dofs[i])]);
+      }
+    }
+    el.dofs = std::move(local);
     max_local_ = std::max(max_local_, static_cast<Index>(el.dofs.size()));
   }
+}
+
+Eigen::SparseMatrix<double> HalfBoxSpace::from_vertices() const {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Index d = 0; d < num_dofs(); ++d) {
+    entries.emplace_back(d, vertex(d), 1.0);
+    if (removed_vertex_ >= 0) entries.emplace_back(d, removed_vertex_, -dependency_[static_cast<std::size_t>(d)]);
+  }
+  Eigen::SparseMatrix<double> r(num_dofs(), net_.num_vertices());
+  r.setFromTriplets(entries.begin(), entries.end());
+  return r;
+}
+
+Eigen::MatrixXd HalfBoxSpace::patch_map(Index e) const {
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  const auto n = static_cast<Index>(el.dofs.size());
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(n + (el.removed >= 0 ? 1 : 0), n);
+  for (Index i = 0; i < n; ++i) s(i + (el.removed >= 0 && i >= el.removed ? 1 : 0), i) = 1.0;
+  return s;
 }
 
 void HalfBoxSpace::build_boundary() {
@@ -82,23 +122,45 @@ void HalfBoxSpace::build_boundary() {
 std::span<const Index> HalfBoxSpace::dofs(Index e) const { return elements_[static_cast<std::size_t>(e)].dofs; }
 
 void HalfBoxSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
-  evaluate_patch(elements_[static_cast<std::size_t>(e)].kind.valence, pts, derivatives, out);
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  if (el.removed < 0) {
+    evaluate_patch(el.kind.valence, pts, derivatives, out);
+    return;
+  }
+  // The patch's functions without the one left out (the space's dependency).
+  thread_local BasisValues full;
+  evaluate_patch(el.kind.valence, pts, derivatives, full);
+  const Eigen::Index m = full.value.rows(), r = el.removed, q = pts.cols();
+  out.resize(m - 1, q, derivatives);
+  auto drop = [&](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) {
+    to.topRows(r) = from.topRows(r);
+    to.bottomRows(m - 1 - r) = from.bottomRows(m - 1 - r);
+  };
+  drop(full.value, out.value);
+  if (derivatives >= 1) {
+    drop(full.du, out.du);
+    drop(full.dv, out.dv);
+  }
+  if (derivatives >= 2) {
+    drop(full.duu, out.duu);
+    drop(full.duv, out.duv);
+    drop(full.dvv, out.dvv);
+  }
 }
 
 std::optional<SubdivisionElement> HalfBoxSpace::subdivision_element(Index e) const {
   const Element& el = elements_[static_cast<std::size_t>(e)];
   if (el.kind.family != Family::Irregular) return std::nullopt;
-  const auto m = static_cast<Index>(el.dofs.size());
-  return SubdivisionElement{&half_box_view(el.kind.valence), Eigen::MatrixXd::Identity(m, m), 0, {}};
+  return SubdivisionElement{&half_box_view(el.kind.valence), patch_map(e), 0, {}};
 }
 
 Geometry make_half_box_geometry(const mesh::PolyMesh& net, const std::string& name) {
   auto space = std::make_shared<const HalfBoxSpace>(net, name);
   const int dim = net.is_planar() ? 2 : 3;
-  Eigen::MatrixXd cp(space->num_dofs(), dim);
-  for (Index d = 0; d < space->num_dofs(); ++d) {
-    cp.row(d) = space->control_net().point(space->vertex(d)).head(dim).transpose();
-  }
+  const mesh::PolyMesh& n = space->control_net();
+  Eigen::MatrixXd positions(n.num_vertices(), dim);
+  for (Index v = 0; v < n.num_vertices(); ++v) positions.row(v) = n.point(v).head(dim).transpose();
+  Eigen::MatrixXd cp = space->from_vertices() * positions;
   return Geometry(space, std::move(cp));
 }
 

@@ -18,6 +18,7 @@
 // so refined spaces are nested. The boundary curves depend on interior rows of control points; Dirichlet data
 // then become coupled constraints (fem/dirichlet.hpp). The thesis's boundary-interpolating double-knot rule
 // is not implemented.
+#include <Eigen/Sparse>
 #include <memory>
 #include <span>
 #include <string>
@@ -51,6 +52,16 @@ class HalfBoxSpace final : public Space {
   const mesh::PolyMesh& control_net() const { return net_; }
   /// 0 or 1: subdivision steps applied to the given net first.
   int refinement_steps() const { return steps_; }
+  /// Whether the functions of the net were linearly dependent (dependency.hpp: a bipartite net whose patches
+  /// all annihilate the alternating pattern); then the function of removed_vertex() is left out.
+  bool reduced() const { return removed_vertex_ >= 0; }
+  Index removed_vertex() const { return removed_vertex_; }
+  /// num_dofs × net vertices: the dof coefficients of the function with the given vertex coefficients
+  /// (Σ_v a_v φ_v = Σ_d (R a)_d φ_d; identity on the dofs' vertices unless reduced()).
+  Eigen::SparseMatrix<double> from_vertices() const;
+  /// patch_size × dofs(e).size(): the patch's control-point coefficients from the element's dof coefficients
+  /// (a 0/1 selection; a zero row for the function left out).
+  Eigen::MatrixXd patch_map(Index e) const;
   /// The net vertex (0-based) of a dof, and the vertex whose patch element e is.
   Index vertex(Index dof) const { return vertex_of_dof_[static_cast<std::size_t>(dof)]; }
   Index element_vertex(Index e) const { return elements_[static_cast<std::size_t>(e)].vertex; }
@@ -59,7 +70,8 @@ class HalfBoxSpace final : public Space {
   struct Element {
     Index vertex = -1;
     ElementKind kind;
-    std::vector<Index> dofs;       // patch order (patch_net.hpp)
+    std::vector<Index> dofs;       // patch order (patch_net.hpp), without the function left out
+    int removed = -1;              // local patch index of the function left out, or -1
     std::array<Index, 3> across{};  // net vertex across side i (the neighbour shared by F_i and F_{i+1})
   };
   void build_elements(const std::string& name);
@@ -71,6 +83,8 @@ class HalfBoxSpace final : public Space {
   std::vector<Index> vertex_of_dof_;
   std::vector<BoundaryEdge> boundary_;
   Index max_local_ = 0;
+  Index removed_vertex_ = -1;
+  std::vector<double> dependency_;  // c_d / c_removed per dof (reduced spaces)
 };
 
 /// The geometry of a three-valent net: HalfBoxSpace + the positions of its dofs' vertices (dim 2 when all
