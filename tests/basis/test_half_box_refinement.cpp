@@ -10,6 +10,7 @@
 #include "mesh/obj_reader.hpp"
 #include "mesh/three_valent.hpp"
 #include "quadrature/exact/geometry_integrals.hpp"
+#include "basis/space.hpp"
 
 using namespace iga;
 
@@ -63,4 +64,50 @@ TEST(HalfBoxRefinement, TheCheckSeesAMovedPoint) {
   cp(cp.rows() / 2, 0) += 0.01;
   const basis::Geometry moved(g.space_ptr(), cp);
   EXPECT_GT(std::abs(quadrature::exact::exact_area(moved) - a), 1e-6);
+}
+
+// The boundary of a net with a boundary (thesis §3.2.1, "Boundaries and creases": along an ordinary boundary
+// the boundary curve is a C1 cubic B-spline with double knots): every boundary side of a regular element is a
+// cubic (its fourth differences along t vanish), consecutive sides meet with equal end point and equal
+// derivative d/dt, i.e. C1 with uniform double knots. Measured on the dual of tri_square at sides of regular
+// elements whose neighbours along the boundary are regular too.
+TEST(HalfBoxRefinement, OrdinaryBoundaryIsAC1CubicSpline) {
+  const mesh::PolyMesh net = mesh::dual_net(mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/tri_square.obj"));
+  basis::BackendFacts facts;
+  const basis::Geometry g = basis::make_geometry(basis::backend("halfbox"), &net, basis::BackendOptions{}, facts);
+  struct End {
+    Eigen::Vector3d start, end, d_start, d_end;
+    bool regular;
+  };
+  std::vector<End> ends;
+  double worst_cubic = 0;
+  basis::GeometryValues gv;
+  for (const basis::BoundaryEdge& b : g.space().boundary_edges()) {
+    const basis::Shape shape = g.space().kind(b.element).shape;
+    Eigen::Matrix2Xd pts(2, 5);
+    for (int k = 0; k < 5; ++k) pts.col(k) = basis::side_point(shape, b.side, k / 4.0);
+    g.evaluate(b.element, pts, gv);
+    const Eigen::Vector2d dt = basis::side_tangent(shape, b.side);
+    const bool regular = g.space().kind(b.element).family == basis::Family::Regular;
+    if (regular) {
+      const Eigen::Vector3d fourth = gv.x.col(0) - 4 * gv.x.col(1) + 6 * gv.x.col(2) - 4 * gv.x.col(3) + gv.x.col(4);
+      worst_cubic = std::max(worst_cubic, fourth.norm());
+    }
+    ends.push_back({gv.x.col(0), gv.x.col(4), dt(0) * gv.xu.col(0) + dt(1) * gv.xv.col(0),
+                    dt(0) * gv.xu.col(4) + dt(1) * gv.xv.col(4), regular});
+  }
+  EXPECT_LE(worst_cubic, 1e-13);
+  int joins = 0;
+  double worst_c0 = 0, worst_c1 = 0;
+  for (const End& a : ends) {
+    for (const End& b : ends) {
+      if (!a.regular || !b.regular || (a.end - b.start).norm() > 1e-9) continue;
+      ++joins;
+      worst_c0 = std::max(worst_c0, (a.end - b.start).norm());
+      worst_c1 = std::max(worst_c1, (a.d_end - b.d_start).norm() / a.d_end.norm());
+    }
+  }
+  EXPECT_GE(joins, 16);  // 20 joins of regular boundary sides on this net
+  EXPECT_LE(worst_c0, 1e-13);
+  EXPECT_LE(worst_c1, 1e-12);
 }
