@@ -123,7 +123,7 @@ int run(const Options& o) {
   j["bv_skipped"] = 0;
   for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
   if (j["bv_skipped"].get<long long>() > 0) {
-    log(std::to_string(j["bv_skipped"].get<long long>()) + " element(s) at extraordinary vertices are not polynomial: not in the .bv (the .vtu samples them)");
+    log(std::to_string(j["bv_skipped"].get<long long>()) + " element(s) at extraordinary vertices or faces are not polynomial: not in the .bv (the .vtu samples them)");
   }
   if (!o.vtu.empty()) {
     if (geometry.space().num_elements() == 0) throw iga::InputError("the net produces no patch (every vertex and face touches the boundary): nothing to write to " + o.vtu);
