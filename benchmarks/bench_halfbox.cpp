@@ -6,8 +6,8 @@
 //    square_evs.obj, as bench-cc-evaluator) and Stam's evaluator alone per valence; the time per point of each
 //    EF valence relative to the regular patch (the goal: at most 2), median and range over --repeat rounds;
 //  - poisson: fem::solve_poisson of the "sine" problem at about 10^5 elements, half-box on the dual net of
-//    --tri-mesh (tri_square.obj, tiles:4:10) and Catmull–Clark on --quad-mesh (square_evs.obj, gauss:4): dofs, elements, quadrature
-//    points, assembly and solve seconds, threads, L2 error.
+//    --tri-mesh (tri_square.obj, tiles:4:10) and Catmull–Clark on --quad-mesh (square_evs.obj, gauss:4):
+//    dofs, elements, quadrature points, assembly and solve seconds, threads, L2 error.
 // --quick: small sizes (the ctest).
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -204,12 +204,15 @@ int main(int argc, char** argv) {
   CLI::App app{"bench-halfbox: evaluation and Poisson assembly speed of half-box splines beside Catmull–Clark"};
   Options o;
   app.add_flag("--quick", o.quick, "small sizes: 2000 calls, 1 run, half-box refine 1, Catmull–Clark refine 1");
-  app.add_option("--calls", o.calls, "calls per evaluation measurement")->check(CLI::Range(1L, 1000000000L))->capture_default_str();
-  app.add_option("--repeat", o.repeat, "runs per evaluation measurement: the fastest rate and the median EF/regular time ratio are reported")->check(CLI::Range(1, 100))->capture_default_str();
+  app.add_option("--calls", o.calls, "calls per evaluation measurement")
+      ->check(CLI::Range(1L, 1000000000L))->capture_default_str();
+  app.add_option("--repeat", o.repeat, "rounds per evaluation measurement: the fastest rate and the median EF/regular time ratio are reported")
+      ->check(CLI::Range(1, 100))->capture_default_str();
   app.add_option("--points", o.points, "points per call")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--halfbox-refine", o.halfbox_refine, "refinements of the dual of tri_square.obj (128 · 4^K elements)")
       ->check(CLI::Range(0, 8))->capture_default_str();
-  app.add_option("--cc-refine", o.cc_refine, "refinements of square_evs.obj (144 · 4^K elements)")->check(CLI::Range(0, 8))->capture_default_str();
+  app.add_option("--cc-refine", o.cc_refine, "refinements of square_evs.obj (144 · 4^K elements)")
+      ->check(CLI::Range(0, 8))->capture_default_str();
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(CLI::Range(1, 1024));
   app.add_option("--seed", o.seed, "seed of the random evaluation points")->capture_default_str();
   app.add_option("--tri-mesh", o.tri_mesh, "triangle mesh whose dual net the half-box Poisson run uses")

@@ -65,7 +65,9 @@ void write_bv(std::ostream& out, const std::vector<BvPatch>& patches) {
     if (!p.group.empty()) out << p.group << '\n';
     if (p.triangle) {  // the stored order is the file's (bv.hpp)
       out << "3\n" << p.degree_u << '\n';
-      for (Eigen::Index r = 0; r < p.points.rows(); ++r) out << p.points(r, 0) << ' ' << p.points(r, 1) << ' ' << p.points(r, 2) << '\n';
+      for (Eigen::Index r = 0; r < p.points.rows(); ++r) {
+        out << p.points(r, 0) << ' ' << p.points(r, 1) << ' ' << p.points(r, 2) << '\n';
+      }
       continue;
     }
     out << "5\n" << p.degree_u << ' ' << p.degree_v << '\n';

@@ -50,9 +50,10 @@ constexpr int triangle_index(int degree, int j, int k) { return k * (degree + 1)
 /// (d+1)(d+2)/2.
 constexpr int triangle_size(int degree) { return (degree + 1) * (degree + 2) / 2; }
 
-/// Writes kind-5 (tensor) and kind-3 (triangle) patches, each preceded by its group line when it has one; coordinates with 17 significant
-/// digits (exact round trip). Throws InputError for a patch whose point count does not fit its degrees or
-/// whose points are not 3D, and InputError(path, 0, "cannot write file") when the file cannot be written.
+/// Writes kind-5 (tensor) and kind-3 (triangle) patches, each preceded by its group line when it has one;
+/// coordinates with 17 significant digits (exact round trip). Throws InputError for a patch whose point count
+/// does not fit its degrees (or triangle degree) or whose points are not 3D, and InputError(path, 0, "cannot
+/// write file") when the file cannot be written.
 void write_bv(const std::string& path, const std::vector<BvPatch>& patches);
 void write_bv(std::ostream& out, const std::vector<BvPatch>& patches);
 

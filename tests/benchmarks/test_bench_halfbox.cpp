@@ -42,7 +42,9 @@ TEST(BenchHalfBox, QuickRunWritesEveryFigure) {
     expect_positive(j, std::string("/halfbox_points_per_second/ef_time_over_regular/") + n);
     expect_positive(j, std::string("/cc_points_per_second/stam/") + n);
   }
-  for (const char* k : {"regular_element", "ev_element", "ev_time_over_regular"}) expect_positive(j, std::string("/cc_points_per_second/") + k);
+  for (const char* k : {"regular_element", "ev_element", "ev_time_over_regular"}) {
+    expect_positive(j, std::string("/cc_points_per_second/") + k);
+  }
   EXPECT_TRUE(j.at("ef_within_2x_of_regular").is_boolean());
   for (const char* b : {"halfbox", "cc"}) {
     for (const char* k : {"dofs", "elements", "quadrature_points", "assembly_seconds", "solve_seconds", "threads", "l2_error"}) {
