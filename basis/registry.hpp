@@ -45,7 +45,9 @@ struct Refinement {
 
 /// One Bézier patch of a geometry for export (BezierView .bv): a tensor-product patch of degrees
 /// (degree_u, degree_v) with (degree_u + 1)(degree_v + 1) points in u-fastest order, or a triangular patch
-/// (triangle = true) of degree degree_u with its (d+1)(d+2)/2 points b_ijk in the order of io/bv.hpp.
+/// (triangle = true) of degree degree_u with its (d+1)(d+2)/2 points b_ijk (barycentric λ0 = 1 − u − v,
+/// λ1 = u, λ2 = v) ordered by i, then j, descending: (d00), (d−1,1,0), (d−1,0,1), …, (00d) (for d = 3 the order
+/// of basis/half_box/regular_patch.hpp); writers map it to their file's order (io/bv.hpp: iga-geometry).
 struct BezierPatch {
   std::string group;
   bool triangle = false;

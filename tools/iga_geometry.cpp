@@ -9,6 +9,8 @@
 //               polynomial and are skipped — counted in the JSON ("bv_skipped") and said on stderr; the .vtu
 //               samples them.
 //   polyhedral  every patch of every configuration (paper's group names); --degree-raise writes all as bi-3.
+//   halfbox     the regular elements as cubic triangles (kind 3); elements at extraordinary faces are not
+//               polynomial and are skipped ("bv_skipped").
 // Each backend makes its patches (basis/registry.hpp, Backend::bezier_patches); this program only writes them.
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
@@ -38,6 +40,21 @@ struct Options {
   bool degree_raise = false, quiet = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
 };
+
+// A triangle of basis/registry.hpp (b_ijk with i, then j, descending: (d00), (d−1,1,0), (d−1,0,1), …, (00d))
+// in the row order of io/bv.hpp.
+Eigen::MatrixXd to_bv_triangle(int degree, const Eigen::MatrixXd& points) {
+  if (points.rows() != iga::io::triangle_size(degree)) {
+    throw iga::NumericalError("--bv: a triangular patch of degree " + std::to_string(degree) + " has " +
+                              std::to_string(points.rows()) + " points");
+  }
+  Eigen::MatrixXd out(points.rows(), points.cols());
+  Eigen::Index r = 0;
+  for (int i = degree; i >= 0; --i) {
+    for (int j = degree - i; j >= 0; --j) out.row(iga::io::triangle_index(degree, j, degree - i - j)) = points.row(r++);
+  }
+  return out;
+}
 
 // --three-valent dual|trisect: a three-valent net from a triangle mesh (thesis Appendix B), written as OBJ,
 // with its face sizes in the report.
@@ -87,8 +104,11 @@ int run(const Options& o) {
   for (const std::string& note : facts.notes) log(note);
   std::vector<iga::io::BvPatch> patches;
   for (iga::basis::BezierPatch& p : backend.bezier_patches(geometry, bo, facts)) {
-    if (p.triangle) throw iga::UnsupportedError("--bv: triangular Bézier patches are not written by this build");
-    patches.push_back({p.group, p.degree_u, p.degree_v, std::move(p.points)});
+    if (p.triangle) {
+      patches.push_back({p.group, true, p.degree_u, p.degree_u, to_bv_triangle(p.degree_u, p.points)});
+    } else {
+      patches.push_back({p.group, false, p.degree_u, p.degree_v, std::move(p.points)});
+    }
   }
   nlohmann::json j;
   j["program"] = "iga-geometry";
@@ -103,7 +123,7 @@ int run(const Options& o) {
   j["bv_skipped"] = 0;
   for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
   if (j["bv_skipped"].get<long long>() > 0) {
-    log(std::to_string(j["bv_skipped"].get<long long>()) + " element(s) at extraordinary vertices are not polynomial: not in the .bv (the .vtu samples them)");
+    log(std::to_string(j["bv_skipped"].get<long long>()) + " element(s) at extraordinary vertices or faces are not polynomial: not in the .bv (the .vtu samples them)");
   }
   if (!o.vtu.empty()) {
     if (geometry.space().num_elements() == 0) throw iga::InputError("the net produces no patch (every vertex and face touches the boundary): nothing to write to " + o.vtu);
@@ -140,7 +160,7 @@ int main(int argc, char** argv) {
   app.add_flag("--degree-raise", o.degree_raise, "polyhedral: write every patch as bi-3 (regular bi-2 patches degree-raised)");
   app.add_option("--vtu", o.vtu, "ParaView output of the limit surface (point data u = 0)");
   app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(CLI::Range(2, 64))->capture_default_str();
-  app.add_option("--bv", o.bv, "BezierView output (kind-5 patches)");
+  app.add_option("--bv", o.bv, "BezierView output (kind-5 tensor and kind-3 triangular patches)");
   app.add_option("--json", o.json, "JSON report: element and patch counts (polyhedral: per configuration and valence, e.g. star5)");
   app.add_option("--three-valent", o.three_valent, "make a three-valent net from the triangle mesh --mesh: dual (a vertex per triangle) or trisect (edges split in three, corners cut); written to --obj")
       ->check(CLI::IsMember({"dual", "trisect"}));

@@ -151,6 +151,8 @@ void generate_operators(SubdivisionStructure& s) {
     pa = a * pa;
     pb = b * pb;
   }
+  s.bezier_operators_.clear();
+  for (const Eigen::MatrixXd& op : s.operators_) s.bezier_operators_.emplace_back(op.transpose() * bezier_matrix().transpose());
   // Tangent stencils: lim 2^(l−1) ∇ X Ā B^(l−1) = ∇ X Ā P at the centroid of tile 2 of layer 1.
   const TileMap& t = s.tiles[2];
   const Eigen::Vector2d c = t.jacobian * Eigen::Vector2d(1.0 / 3.0, 1.0 / 3.0) + t.offset;

@@ -19,8 +19,10 @@
 #include <string>
 #include <vector>
 
+#include "basis/registry.hpp"
 #include "io/bv.hpp"
 #include "mesh/obj_reader.hpp"
+#include "mesh/obj_writer.hpp"
 #include "mesh/three_valent.hpp"
 
 namespace fs = std::filesystem;
@@ -316,4 +318,67 @@ TEST_F(IgaGeometry, ThreeValentNetsFromATriangulation) {
   EXPECT_NE(r.err.find("quads.obj:0: face 1 has 4 vertices"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(run("--three-valent dual --mesh quads.obj").code, 0);  // no --obj
+}
+
+namespace {
+// A triangular Bézier patch of io/bv.hpp's order at (u, v): Σ d!/(i! j! k!) λ0^i λ1^j λ2^k b_ijk.
+Eigen::RowVector3d bezier_triangle(const iga::io::BvPatch& p, double u, double v) {
+  const int d = p.degree_u;
+  auto fact = [](int n) { return std::tgamma(n + 1.0); };
+  Eigen::RowVector3d x = Eigen::RowVector3d::Zero();
+  for (int k = 0; k <= d; ++k) {
+    for (int j = 0; j + k <= d; ++j) {
+      const int i = d - j - k;
+      const double b = fact(d) / (fact(i) * fact(j) * fact(k)) * std::pow(1 - u - v, i) * std::pow(u, j) * std::pow(v, k);
+      x += b * p.points.row(iga::io::triangle_index(d, j, k));
+    }
+  }
+  return x;
+}
+}  // namespace
+
+// Half-box splines: the regular elements are written as cubic triangles (kind 3), the elements at the 5- and
+// 7-gons of the dual of tri_square are skipped. The net is lifted (z = 0.2 sin(3x + 2y²)) so the surface is
+// not affine. Each patch, in the order of the regular elements, equals the limit surface (the half-box geometry
+// of the same net) at the element's centroid and at the non-symmetric point (0.6, 0.25), which a wrong
+// corner order would move; 1e-12 is rounding of the 13-point BB sums (coordinates O(1)).
+TEST_F(IgaGeometry, HalfBoxRegularElementsAsTriangles) {
+  const iga::mesh::PolyMesh flat =
+      iga::mesh::dual_net(iga::mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/tri_square.obj"));
+  std::vector<Eigen::Vector3d> points = flat.points();
+  for (Eigen::Vector3d& x : points) x(2) = 0.2 * std::sin(3 * x(0) + 2 * x(1) * x(1));
+  std::vector<std::vector<iga::Index>> faces;
+  for (iga::Index f = 0; f < flat.num_faces(); ++f) faces.emplace_back(flat.face(f).begin(), flat.face(f).end());
+  iga::mesh::write_obj(iga::mesh::PolyMesh::build(points, faces), (dir_ / "dual.obj").string());
+  const Outcome r = run("--basis halfbox --mesh dual.obj --bv out.bv --json out.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = report("out.json");
+  EXPECT_EQ(j["bv_patches"].get<int>() + j["bv_skipped"].get<int>(), j["elements"].get<int>());
+  EXPECT_GT(j["bv_skipped"].get<int>(), 0);
+  const auto patches = iga::io::read_bv((dir_ / "out.bv").string());
+  ASSERT_EQ(static_cast<int>(patches.size()), j["bv_patches"].get<int>());
+
+  const iga::mesh::PolyMesh back = iga::mesh::read_obj((dir_ / "dual.obj").string());
+  iga::basis::BackendFacts facts;
+  const iga::basis::Geometry g = iga::basis::make_geometry(iga::basis::backend("halfbox"), &back, {}, facts);
+  ASSERT_EQ(g.space().num_elements(), j["elements"].get<int>());
+  Eigen::Matrix2Xd pts(2, 2);
+  pts << 1.0 / 3, 0.6, 1.0 / 3, 0.25;
+  iga::basis::GeometryValues gv;
+  std::size_t next = 0;
+  double worst = 0;
+  for (iga::Index e = 0; e < g.space().num_elements(); ++e) {
+    if (g.space().kind(e).family != iga::basis::Family::Regular) continue;
+    ASSERT_LT(next, patches.size());
+    const iga::io::BvPatch& p = patches[next++];
+    ASSERT_TRUE(p.triangle);
+    ASSERT_EQ(p.degree_u, 3);
+    g.evaluate(e, pts, gv);
+    for (int c = 0; c < 2; ++c) {
+      const Eigen::RowVector3d limit = gv.x.col(c).transpose();
+      worst = std::max(worst, (bezier_triangle(p, pts(0, c), pts(1, c)) - limit).norm());
+    }
+  }
+  EXPECT_EQ(next, patches.size());
+  EXPECT_LT(worst, 1e-12);
 }
