@@ -3,7 +3,7 @@
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
-#include <Eigen/SparseQR>
+#include <Eigen/SPQRSupport>
 
 #include "core/error.hpp"
 
@@ -48,7 +48,7 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
   // below the threshold are dependent and moved to the end), the rest coupled to S.
   const double max_diag = mdd.diagonal().maxCoeff();
   mdd.makeCompressed();
-  Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr;
+  Eigen::SPQR<Eigen::SparseMatrix<double>> qr;
   qr.setPivotThreshold(1e-10 * max_diag);
   qr.compute(mdd);
   if (qr.info() != Eigen::Success) throw NumericalError("Dirichlet projection: QR of the boundary mass matrix failed");
