@@ -83,11 +83,10 @@ Refinement refine(const Geometry& geometry, int steps, BackendFacts& facts) {
   return out;
 }
 
-// Regular elements are cubic Bézier triangles: c = bezier_matrix() · P. EF elements are not polynomial
-// (counted as bv_skipped).
+// Regular elements are cubic Bézier triangles: c = bezier_matrix() · P with P the 13 patch points (through
+// patch_map when the space left a function out). EF elements are not polynomial (counted as bv_skipped).
 std::vector<BezierPatch> regular_triangles(const Geometry& geometry, const BackendOptions&, BackendFacts& facts) {
-  const Space& space = geometry.space();
-  half_box_of(geometry);
+  const HalfBoxSpace& space = half_box_of(geometry);
   std::vector<BezierPatch> patches;
   long long skipped = 0;
   Eigen::MatrixXd local;
@@ -101,7 +100,7 @@ std::vector<BezierPatch> regular_triangles(const Geometry& geometry, const Backe
     for (std::size_t k = 0; k < dofs.size(); ++k) {
       local.row(static_cast<Index>(k)).head(geometry.dim()) = geometry.control_points().row(dofs[k]);
     }
-    patches.push_back({"Group 0 HalfBox", true, 3, 3, half_box::bezier_matrix() * (half_box_of(geometry).patch_map(e) * local)});
+    patches.push_back({"Group 0 HalfBox", true, 3, 3, half_box::bezier_matrix() * (space.patch_map(e) * local)});
   }
   facts.counts["bv_skipped"] = skipped;
   return patches;
