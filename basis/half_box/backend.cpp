@@ -28,6 +28,14 @@ Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFac
   if (steps > 0) {
     facts.notes.push_back("two extraordinary faces meet at a vertex of the net: applied one half-box subdivision step first");
   }
+  facts.counts["halfbox_boundary_sides"] = static_cast<long long>(g.space().boundary_edges().size());
+  if (!half_box_of(g).control_net().is_closed()) {
+    facts.notes.push_back("the net has a boundary: the domain is the union of the complete patches (it recedes from the "
+                          "net's outer layer; the thesis's boundary-interpolating rule is not implemented)");
+  }
+  if (half_box_of(g).reduced()) {
+    facts.notes.push_back("the net's half-box functions are linearly dependent (a net of even faces only): one function is left out");
+  }
   return g;
 }
 

@@ -205,6 +205,9 @@ TEST(Registry, FactsOfTheBuild) {
     BackendFacts hf;
     make_geometry(backend("halfbox"), &three_valent, BackendOptions{}, hf);
     EXPECT_EQ(hf.counts.at("halfbox_separation_steps"), steps) << file;
-    EXPECT_EQ(hf.notes.size(), static_cast<std::size_t>(steps)) << file;
+    EXPECT_GT(hf.counts.at("halfbox_boundary_sides"), 0) << file;
+    // One note per separation step, and one saying that the boundary recedes (never silently).
+    ASSERT_EQ(hf.notes.size(), static_cast<std::size_t>(steps + 1)) << file;
+    EXPECT_NE(hf.notes.back().find("the net has a boundary"), std::string::npos) << hf.notes.back();
   }
 }
