@@ -182,8 +182,8 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
   }
 }
 
-Eigen::VectorXd Assembler::integrate(int n,
-                                     const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const {
+Eigen::MatrixXd Assembler::integrate_per_element(
+    int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const {
   const Index ne = geometry_.space().num_elements();
   Eigen::MatrixXd partial = Eigen::MatrixXd::Zero(n, ne);
   std::vector<ElementContext> contexts(static_cast<std::size_t>(omp_get_max_threads()));
@@ -192,8 +192,14 @@ Eigen::VectorXd Assembler::integrate(int n,
     prepare(e, ctx);
     f(ctx, partial.col(e));
   });
+  return partial;
+}
+
+Eigen::VectorXd Assembler::integrate(int n,
+                                     const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const {
+  const Eigen::MatrixXd partial = integrate_per_element(n, f);
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(n);
-  for (Index e = 0; e < ne; ++e) sum += partial.col(e);
+  for (Index e = 0; e < partial.cols(); ++e) sum += partial.col(e);
   return sum;
 }
 

@@ -39,8 +39,12 @@ class Assembler {
                          const BoundaryLinearForm* linear, Eigen::SparseMatrix<double>* a,
                          Eigen::VectorXd* b) const;
 
-  /// Sum over elements of `n` element quantities computed by f(ctx, out) (out has n entries, zeroed),
-  /// in parallel, reduced in element order (reproducible). For error norms and measures.
+  /// The `n` element quantities computed by f(ctx, out) for every element (out has n entries, zeroed): an
+  /// n × num_elements matrix, column e for element e (deal.II's per-cell vectors: error indicators,
+  /// estimators). Computed in parallel; each column by one call, so the result does not depend on the threads.
+  Eigen::MatrixXd integrate_per_element(int n,
+                                        const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const;
+  /// Their sum over elements, reduced in element order (reproducible). For error norms and measures.
   Eigen::VectorXd integrate(int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const;
 
   /// Fills ctx for element e at its rule's points (basis with first derivatives, geometry, weights,
