@@ -26,6 +26,22 @@ struct BasisValues {
     }
   }
 
+  /// Calls f(from_block, to_block) for each pair of blocks of `from` and `to` needed for `derivatives`
+  /// (value, then du, dv, then duu, duv, dvv).
+  template <class F>
+  static void for_each_block(const BasisValues& from, BasisValues& to, int derivatives, F&& f) {
+    f(from.value, to.value);
+    if (derivatives >= 1) {
+      f(from.du, to.du);
+      f(from.dv, to.dv);
+    }
+    if (derivatives >= 2) {
+      f(from.duu, to.duu);
+      f(from.duv, to.duv);
+      f(from.dvv, to.dvv);
+    }
+  }
+
   /// Zeroes column p (one point) of the blocks needed for `derivatives`.
   void zero_column(Eigen::Index p, int derivatives) {
     value.col(p).setZero();

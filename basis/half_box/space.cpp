@@ -132,20 +132,10 @@ void HalfBoxSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivative
   evaluate_patch(el.kind.valence, pts, derivatives, full);
   const Eigen::Index m = full.value.rows(), r = el.removed, q = pts.cols();
   out.resize(m - 1, q, derivatives);
-  auto drop = [&](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) {
+  BasisValues::for_each_block(full, out, derivatives, [&](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) {
     to.topRows(r) = from.topRows(r);
     to.bottomRows(m - 1 - r) = from.bottomRows(m - 1 - r);
-  };
-  drop(full.value, out.value);
-  if (derivatives >= 1) {
-    drop(full.du, out.du);
-    drop(full.dv, out.dv);
-  }
-  if (derivatives >= 2) {
-    drop(full.duu, out.duu);
-    drop(full.duv, out.duv);
-    drop(full.dvv, out.dvv);
-  }
+  });
 }
 
 std::optional<SubdivisionElement> HalfBoxSpace::subdivision_element(Index e) const {
