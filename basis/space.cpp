@@ -63,4 +63,8 @@ std::string to_string(const ElementKind& k) {
   return s;
 }
 
+std::vector<InteriorEdge> Space::interior_edges() const {
+  throw UnsupportedError("interior edges are not implemented for the '" + name() + "' basis");
+}
+
 }  // namespace iga::basis

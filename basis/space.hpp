@@ -21,6 +21,21 @@ struct BoundaryEdge {
   int part = 0;
 };
 
+/// Two elements that share (part of) a side inside the domain. The shared piece is traversed by s in [0, 1]:
+/// on element[i] it is side[i] at side parameter t0[i] + s (t1[i] - t0[i]) (side_point() of that element's
+/// shape), and both ends give the same physical point. Conforming neighbours have t0 = 0, t1 = 1 on one
+/// element and t0 = 1, t1 = 0 on the other (sides run counter-clockwise on each element); a side of a coarse
+/// element that meets several finer ones (hierarchical spaces) appears once per finer neighbour, with the
+/// piece's sub-range on the coarse side. `continuity` is the smoothness of the space across the edge: 0 where
+/// the functions are only C0 there (normal-flux jumps of a discrete solution are possible), >= 1 otherwise.
+struct InteriorEdge {
+  Index element[2] = {0, 0};
+  int side[2] = {0, 0};
+  double t0[2] = {0.0, 1.0};
+  double t1[2] = {1.0, 0.0};
+  int continuity = 1;
+};
+
 /// Number of sides of a reference element: 4 for the unit square, 3 for the unit triangle.
 int num_sides(Shape shape);
 /// Reference-domain point of side `side` at parameter t in [0,1], and d(u,v)/dt; sides are traversed
@@ -50,6 +65,11 @@ class Space {
   virtual std::vector<BoundaryEdge> boundary_edges() const = 0;
   /// Names of the boundary parts that BoundaryEdge::part indexes.
   virtual std::vector<std::string> boundary_part_names() const = 0;
+  /// Every interior edge once (InteriorEdge), in a fixed order. Backends without adjacency information throw
+  /// UnsupportedError naming themselves.
+  virtual std::vector<InteriorEdge> interior_edges() const;
+  /// Refinement level of element e in a hierarchical space (0 = the coarsest); 0 for single-level spaces.
+  virtual int level(Index) const { return 0; }
   /// For exact integration of an infinitely piecewise element (subdivision_view.hpp): its tiles and
   /// subdivision structure; std::nullopt for polynomial elements and backends without one.
   virtual std::optional<SubdivisionElement> subdivision_element(Index) const { return std::nullopt; }
