@@ -3,14 +3,17 @@
 namespace iga::basis::bspline {
 
 Eigen::MatrixXd extraction_operator(const KnotVector& kv, Index mu) {
-  const int p = kv.degree();
-  const double a = kv[mu];
-  const double b = kv[mu + 1];
+  return extraction_operator(kv.knots().data() + (mu - kv.degree()), kv.degree());
+}
+
+Eigen::MatrixXd extraction_operator(const double* window, int p) {
+  const double a = window[p];
+  const double b = window[p + 1];
   Eigen::MatrixXd c(p + 1, p + 1);
   std::vector<double> args(static_cast<std::size_t>(p));
   for (int j = 0; j <= p; ++j) {
     for (int k = 0; k < p; ++k) args[static_cast<std::size_t>(k)] = k < p - j ? a : b;
-    c.col(j) = blossom_row(kv, mu, args.data());
+    c.col(j) = blossom_row(window, p, args.data());
   }
   return c;
 }

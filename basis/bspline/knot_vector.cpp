@@ -123,22 +123,26 @@ Eigen::MatrixXd basis_functions(const KnotVector& kv, Index span, double x, int 
   return out;
 }
 
-Eigen::VectorXd blossom_row(const KnotVector& kv, Index span, const double* args) {
-  const int p = kv.degree();
+Eigen::VectorXd blossom_row(const double* w, int p, const double* args) {
+  // w[k] = t_{span-p+k}, k = 0..2p+1.
   Eigen::VectorXd b = Eigen::VectorXd::Ones(1);  // b(j) <-> index span-(k-1)+j at level k-1
   for (int k = 1; k <= p; ++k) {
     const double x = args[k - 1];
     Eigen::VectorXd nb = Eigen::VectorXd::Zero(k + 1);
     for (int j = 0; j <= k; ++j) {
-      const Index i = span - k + j;
+      const int i = p - k + j;  // window index of t_{span-k+j}
       double v = 0.0;
-      if (j >= 1) v += (x - kv[i]) / (kv[i + k] - kv[i]) * b(j - 1);
-      if (j <= k - 1) v += (kv[i + k + 1] - x) / (kv[i + k + 1] - kv[i + 1]) * b(j);
+      if (j >= 1) v += (x - w[i]) / (w[i + k] - w[i]) * b(j - 1);
+      if (j <= k - 1) v += (w[i + k + 1] - x) / (w[i + k + 1] - w[i + 1]) * b(j);
       nb(j) = v;
     }
     b = std::move(nb);
   }
   return b;
+}
+
+Eigen::VectorXd blossom_row(const KnotVector& kv, Index span, const double* args) {
+  return blossom_row(kv.knots().data() + (span - kv.degree()), kv.degree(), args);
 }
 
 }  // namespace iga::basis::bspline

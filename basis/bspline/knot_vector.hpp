@@ -53,5 +53,8 @@ Eigen::MatrixXd basis_functions(const KnotVector& kv, Index span, double x, int 
 /// of B-spline matrices R_1(args_1) ... R_p(args_p)). With all args equal to x it gives the B-spline values
 /// at x. Used for Bézier extraction and knot insertion.
 Eigen::VectorXd blossom_row(const KnotVector& kv, Index span, const double* args);
+/// The same from the knot window w[k] = t_{span-p+k}, k = 0..2p+1, alone (the p+1 B-splines of one interval
+/// depend on no other knots): for knot vectors that are never stored whole (basis/thb).
+Eigen::VectorXd blossom_row(const double* window, int p, const double* args);
 
 }  // namespace iga::basis::bspline

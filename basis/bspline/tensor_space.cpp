@@ -39,9 +39,10 @@ Eigen::Vector4d TensorSpace::element_box(Index e) const {
   return {u_[mx], u_[mx + 1], v_[my], v_[my + 1]};
 }
 
-void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
-  const Index ex = e % nex_, ey = e / nex_;
-  const int pu = u_.degree(), pv = v_.degree();
+void evaluate_bezier_tensor(const Eigen::MatrixXd& cu, const Eigen::MatrixXd& cv, const Eigen::Matrix2Xd& pts,
+                            int derivatives, BasisValues& out) {
+  const int pu = static_cast<int>(cu.rows()) - 1, pv = static_cast<int>(cv.rows()) - 1;
+  const Index nloc = (pu + 1) * (pv + 1);
   const Index q = pts.cols();
   // 1D Bernstein values at the points (cached per thread: quadrature evaluates every element at the same
   // reference points), then the element's B-splines by extraction: N = C B.
@@ -61,15 +62,13 @@ void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives
     bernstein(pv, pts.row(1), derivatives, cache.bv[0], &cache.bv[1], &cache.bv[2]);
   }
   thread_local Eigen::MatrixXd nu[3], nv[3];
-  const Eigen::MatrixXd& cu = cu_[static_cast<std::size_t>(ex)];
-  const Eigen::MatrixXd& cv = cv_[static_cast<std::size_t>(ey)];
   for (int d = 0; d <= derivatives; ++d) {
     nu[d].noalias() = cu.lazyProduct(cache.bu[d]);  // small products: no GEMM blocking
     nv[d].noalias() = cv.lazyProduct(cache.bv[d]);
   }
   // Tensor products, local index a + (pu+1) b.
   auto tensor = [&](const Eigen::MatrixXd& fu, const Eigen::MatrixXd& fv, Eigen::MatrixXd& dst) {
-    dst.resize(nloc_, q);
+    dst.resize(nloc, q);
     for (int b = 0; b <= pv; ++b) {
       dst.middleRows(b * (pu + 1), pu + 1) = fu.array().rowwise() * fv.row(b).array();
     }
@@ -84,6 +83,11 @@ void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives
     tensor(nu[1], nv[1], out.duv);
     tensor(nu[0], nv[2], out.dvv);
   }
+}
+
+void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
+  const Index ex = e % nex_, ey = e / nex_;
+  evaluate_bezier_tensor(cu_[static_cast<std::size_t>(ex)], cv_[static_cast<std::size_t>(ey)], pts, derivatives, out);
 }
 
 std::vector<BoundaryEdge> TensorSpace::boundary_edges() const {

@@ -43,6 +43,12 @@ class TensorSpace final : public Space {
   std::vector<Index> dofs_;               // nloc_ per element
 };
 
+/// Values and (s, t)-derivatives of the (pu+1)(pv+1) tensor-product B-splines of one knot-interval product
+/// from its extraction operators cu, cv (extraction.hpp) at reference points on the unit square, local index
+/// a + (pu+1) b: Bernstein values (cached per thread for repeated point sets) times the operators.
+void evaluate_bezier_tensor(const Eigen::MatrixXd& cu, const Eigen::MatrixXd& cv, const Eigen::Matrix2Xd& pts,
+                            int derivatives, BasisValues& out);
+
 /// The space as a tensor-product B-spline space, or nullptr when it is another backend's (for algorithms that
 /// work on knot vectors, such as refine::refine_smooth_tensor).
 const TensorSpace* tensor_space(const Space& space);

@@ -1,0 +1,377 @@
+#include "basis/hierarchical/hierarchical_space.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace iga::basis::hierarchical {
+
+namespace {
+
+// A function of one level: whether its support lies in Ω^l ("inside") and in Ω^{l+1} ("inside_next"), and its
+// dof (or -1) once known.
+struct FunctionState {
+  signed char inside = -1, inside_next = -1;
+  Index dof = -2;  // -2: not decided, -1: not active
+};
+
+// Rows of m whose entries are all below `tiny` (functions that vanish on the cell after truncation) are
+// removed, with their ids.
+void drop_zero_rows(std::vector<Index>& ids, Eigen::MatrixXd& m) {
+  constexpr double tiny = 1e-14;
+  Index kept = 0;
+  for (Index r = 0; r < m.rows(); ++r) {
+    if (m.row(r).cwiseAbs().maxCoeff() > tiny) {
+      if (kept != r) {
+        m.row(kept) = m.row(r);
+        ids[static_cast<std::size_t>(kept)] = ids[static_cast<std::size_t>(r)];
+      }
+      ++kept;
+    }
+  }
+  ids.resize(static_cast<std::size_t>(kept));
+  m.conservativeResize(kept, Eigen::NoChange);
+}
+
+}  // namespace
+
+HierarchicalSpace::HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hierarchy, RefinedCells refined)
+    : hierarchy_(std::move(hierarchy)), refined_(std::move(refined)) {
+  if (!hierarchy_) throw InputError("hierarchical space: no level hierarchy given");
+  while (!refined_.empty() && refined_.back().empty()) refined_.pop_back();
+  if (static_cast<int>(refined_.size()) > hierarchy_->max_level()) {
+    throw UnsupportedError("hierarchical space: level " + std::to_string(refined_.size()) +
+                           " is deeper than the " + std::to_string(hierarchy_->max_level()) + " levels the '" +
+                           hierarchy_->name() + "' hierarchy can index");
+  }
+  for (std::size_t l = 0; l < refined_.size(); ++l) {
+    for (Index c : refined_[l]) {
+      if (!exists(static_cast<int>(l), c)) {
+        throw InputError("hierarchical space: refined cell " + std::to_string(c) + " of level " + std::to_string(l) +
+                         " lies outside the refined region of level " + std::to_string(l));
+      }
+    }
+  }
+  build();
+}
+
+bool HierarchicalSpace::exists(int level, Index cell) const {
+  if (level == 0) return cell >= 0 && cell < hierarchy_->num_root_cells();
+  int slot = 0;
+  return is_refined(level - 1, hierarchy_->parent(level, cell, slot));
+}
+
+bool HierarchicalSpace::is_refined(int level, Index cell) const {
+  return level >= 0 && level < static_cast<int>(refined_.size()) &&
+         refined_[static_cast<std::size_t>(level)].count(cell) > 0;
+}
+
+Index HierarchicalSpace::element_of(int level, Index cell) const {
+  if (level < 0 || level >= static_cast<int>(leaf_index_.size())) return -1;
+  const auto& map = leaf_index_[static_cast<std::size_t>(level)];
+  const auto it = map.find(cell);
+  return it == map.end() ? -1 : it->second;
+}
+
+Index HierarchicalSpace::leaf_containing(int level, Index cell) const {
+  if (is_refined(level, cell)) return -1;
+  int slot = 0;
+  while (level > 0 && !exists(level, cell)) {
+    cell = hierarchy_->parent(level, cell, slot);
+    --level;
+  }
+  return element_of(level, cell);
+}
+
+ElementKind HierarchicalSpace::kind(Index e) const {
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  return hierarchy_->kind(el.level, el.cell);
+}
+
+std::span<const Index> HierarchicalSpace::dofs(Index e) const {
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  return {dofs_.data() + el.dof_begin, static_cast<std::size_t>(el.dof_end - el.dof_begin)};
+}
+
+void HierarchicalSpace::build() {
+  const LevelHierarchy& h = *hierarchy_;
+  const int nf = h.max_local_functions();
+  std::vector<std::unordered_map<Index, FunctionState>> state(refined_.size() + 2);
+  std::vector<Index> scratch;
+  auto function_state = [&](int level, Index f) -> FunctionState& {
+    FunctionState& s = state[static_cast<std::size_t>(level)][f];
+    if (s.inside < 0) {
+      h.support(level, f, scratch);
+      bool inside = true, next = true;
+      for (Index c : scratch) {
+        if (inside && !exists(level, c)) inside = false;
+        if (next && !is_refined(level, c)) next = false;
+      }
+      s.inside = inside ? 1 : 0;
+      s.inside_next = next ? 1 : 0;
+    }
+    return s;
+  };
+  leaf_index_.assign(refined_.size() + 1, {});
+  std::vector<Index> fbuf(static_cast<std::size_t>(nf)), child_buf(static_cast<std::size_t>(nf));
+  Eigen::MatrixXd k;
+  // Depth-first over the forest. At a cell of level l, `rows` are the dofs of coarser levels that do not vanish
+  // there and m their coefficients in the level's local functions; the level's active functions join as unit
+  // rows. Going to a child: m K, then truncation (columns of the child level's functions with supp ⊆ Ω^{l+1}
+  // are zeroed).
+  auto visit = [&](auto&& self, int level, Index cell, std::vector<Index> rows, Eigen::MatrixXd m) -> void {
+    const int nloc = h.local_functions(level, cell, fbuf.data());
+    const Index inherited = static_cast<Index>(rows.size());
+    for (int j = 0; j < nloc; ++j) {
+      FunctionState& s = function_state(level, fbuf[static_cast<std::size_t>(j)]);
+      if (s.dof == -2) {
+        if (s.inside && !s.inside_next) {
+          s.dof = static_cast<Index>(dof_level_.size());
+          dof_level_.push_back(level);
+          dof_home_.push_back(-1);
+          dof_home_local_.push_back(-1);
+        } else {
+          s.dof = -1;
+        }
+      }
+      if (s.dof >= 0) rows.push_back(s.dof);
+    }
+    const Index total = static_cast<Index>(rows.size());
+    m.conservativeResize(total, nloc);
+    if (inherited == 0) m.setZero();
+    m.bottomRows(total - inherited).setZero();
+    for (int j = 0, r = static_cast<int>(inherited); j < nloc; ++j) {
+      const FunctionState& s = state[static_cast<std::size_t>(level)][fbuf[static_cast<std::size_t>(j)]];
+      if (s.dof >= 0) m(r++, j) = 1.0;
+    }
+    if (!is_refined(level, cell)) {
+      drop_zero_rows(rows, m);
+      Element el;
+      el.level = level;
+      el.cell = cell;
+      el.num_local = nloc;
+      el.dof_begin = static_cast<Index>(dofs_.size());
+      dofs_.insert(dofs_.end(), rows.begin(), rows.end());
+      el.dof_end = static_cast<Index>(dofs_.size());
+      const bool identity = inherited == 0 && total == nloc;
+      if (!identity) {
+        el.coeff_begin = static_cast<Index>(coeffs_.size());
+        coeffs_.insert(coeffs_.end(), m.data(), m.data() + m.size());
+      }
+      const Index e = static_cast<Index>(elements_.size());
+      elements_.push_back(el);
+      leaf_index_[static_cast<std::size_t>(level)][cell] = e;
+      max_local_ = std::max<Index>(max_local_, static_cast<Index>(rows.size()));
+      num_levels_ = std::max(num_levels_, level + 1);
+      for (int j = 0; j < nloc; ++j) {
+        const Index d = state[static_cast<std::size_t>(level)][fbuf[static_cast<std::size_t>(j)]].dof;
+        if (d >= 0 && dof_home_[static_cast<std::size_t>(d)] < 0) {
+          dof_home_[static_cast<std::size_t>(d)] = e;
+          dof_home_local_[static_cast<std::size_t>(d)] = j;
+        }
+      }
+      return;
+    }
+    for (int slot = 0; slot < 4; ++slot) {
+      const Index child = h.child(level, cell, slot);
+      h.refinement(level, cell, slot, k);
+      Eigen::MatrixXd mc = m * k;
+      const int nc = h.local_functions(level + 1, child, child_buf.data());
+      for (int j = 0; j < nc; ++j) {
+        if (function_state(level + 1, child_buf[static_cast<std::size_t>(j)]).inside) mc.col(j).setZero();
+      }
+      std::vector<Index> rc = rows;
+      drop_zero_rows(rc, mc);
+      self(self, level + 1, child, std::move(rc), std::move(mc));
+    }
+  };
+  for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, c, {}, Eigen::MatrixXd());
+  for (std::size_t d = 0; d < dof_home_.size(); ++d) {
+    if (dof_home_[d] < 0) throw NumericalError("hierarchical space: dof " + std::to_string(d) + " has no leaf of its level");
+  }
+}
+
+void HierarchicalSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  if (el.coeff_begin < 0) {
+    hierarchy_->evaluate(el.level, el.cell, pts, derivatives, out);
+    return;
+  }
+  thread_local BasisValues local;
+  hierarchy_->evaluate(el.level, el.cell, pts, derivatives, local);
+  const Eigen::Map<const Eigen::MatrixXd> c(coeffs_.data() + el.coeff_begin, el.dof_end - el.dof_begin, el.num_local);
+  out.resize(c.rows(), pts.cols(), derivatives);
+  BasisValues::for_each_block(local, out, derivatives,
+                              [&](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) { to.noalias() = c * from; });
+}
+
+std::vector<BoundaryEdge> HierarchicalSpace::boundary_edges() const {
+  std::vector<BoundaryEdge> edges;
+  for (Index e = 0; e < num_elements(); ++e) {
+    const Element& el = elements_[static_cast<std::size_t>(e)];
+    for (int side = 0; side < 4; ++side) {
+      const int part = hierarchy_->boundary_part(el.level, el.cell, side);
+      if (part >= 0) edges.push_back({e, side, part});
+    }
+  }
+  std::stable_sort(edges.begin(), edges.end(), [](const BoundaryEdge& a, const BoundaryEdge& b) { return a.part < b.part; });
+  return edges;
+}
+
+namespace {
+// Side and side parameter of a point on the boundary of the unit square (side_point's inverse).
+bool square_side_parameter(const Eigen::Vector2d& p, int side, double& t) {
+  constexpr double tol = 1e-12;
+  switch (side) {
+    case 0: t = p.x(); return std::abs(p.y()) < tol;
+    case 1: t = p.y(); return std::abs(p.x() - 1) < tol;
+    case 2: t = 1 - p.x(); return std::abs(p.y() - 1) < tol;
+    default: t = 1 - p.y(); return std::abs(p.x()) < tol;
+  }
+}
+}  // namespace
+
+std::vector<InteriorEdge> HierarchicalSpace::interior_edges() const {
+  const LevelHierarchy& h = *hierarchy_;
+  std::vector<InteriorEdge> edges;
+  Eigen::Matrix2d a;
+  Eigen::Vector2d b;
+  for (Index e = 0; e < num_elements(); ++e) {
+    const Element& el = elements_[static_cast<std::size_t>(e)];
+    for (int side = 0; side < 4; ++side) {
+      if (h.boundary_part(el.level, el.cell, side) >= 0) continue;
+      int their = 0;
+      const Index n = h.neighbour(el.level, el.cell, side, their);
+      InteriorEdge edge;
+      edge.element[0] = e;
+      edge.side[0] = side;
+      edge.continuity = h.continuity(el.level, el.cell, side);
+      if (exists(el.level, n)) {
+        if (is_refined(el.level, n) || n < el.cell) continue;  // the finer side, or the other element, lists it
+        edge.element[1] = element_of(el.level, n);
+        edge.side[1] = their;
+        edges.push_back(edge);
+        continue;
+      }
+      // A coarser leaf: map the ends of the shared side (s = 0 is the neighbour's side parameter 1) up to it.
+      Eigen::Vector2d p0 = side_point(Shape::Quad, their, 1.0), p1 = side_point(Shape::Quad, their, 0.0);
+      int level = el.level;
+      Index cell = n;
+      while (!exists(level, cell)) {
+        int slot = 0;
+        cell = h.parent(level, cell, slot);
+        --level;
+        h.child_map(slot, a, b);
+        p0 = a * p0 + b;
+        p1 = a * p1 + b;
+      }
+      edge.element[1] = element_of(level, cell);
+      for (int s = 0; s < 4; ++s) {
+        double t0 = 0, t1 = 0;
+        if (square_side_parameter(p0, s, t0) && square_side_parameter(p1, s, t1)) {
+          edge.side[1] = s;
+          edge.t0[1] = t0;
+          edge.t1[1] = t1;
+          break;
+        }
+      }
+      edges.push_back(edge);
+    }
+  }
+  return edges;
+}
+
+Eigen::MatrixXd HierarchicalSpace::from_level0(const Eigen::MatrixXd& c0, Index level0_functions) const {
+  if (c0.rows() != level0_functions) {
+    throw InputError("hierarchical space: " + std::to_string(c0.rows()) + " level-0 coefficients for " +
+                     std::to_string(level0_functions) + " level-0 functions");
+  }
+  const LevelHierarchy& h = *hierarchy_;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(num_dofs(), c0.cols());
+  std::vector<Index> fbuf(static_cast<std::size_t>(h.max_local_functions()));
+  Eigen::MatrixXd k;
+  // The spline's local coefficients on each cell (level-local functions × columns), refined down the forest;
+  // at a leaf, the coefficient of each dof at home there is its local coefficient (the dual functional).
+  auto visit = [&](auto&& self, int level, Index cell, const Eigen::MatrixXd& v) -> void {
+    const Index e = element_of(level, cell);
+    if (e >= 0) {
+      const Element& el = elements_[static_cast<std::size_t>(e)];
+      for (Index i = el.dof_begin; i < el.dof_end; ++i) {
+        const Index d = dofs_[static_cast<std::size_t>(i)];
+        if (dof_home_[static_cast<std::size_t>(d)] == e) out.row(d) = v.row(dof_home_local_[static_cast<std::size_t>(d)]);
+      }
+      return;
+    }
+    for (int slot = 0; slot < 4; ++slot) {
+      h.refinement(level, cell, slot, k);
+      self(self, level + 1, h.child(level, cell, slot), Eigen::MatrixXd(k.transpose() * v));
+    }
+  };
+  for (Index c = 0; c < h.num_root_cells(); ++c) {
+    const int n = h.local_functions(0, c, fbuf.data());
+    Eigen::MatrixXd v(n, c0.cols());
+    for (int j = 0; j < n; ++j) v.row(j) = c0.row(fbuf[static_cast<std::size_t>(j)]);
+    visit(visit, 0, c, v);
+  }
+  return out;
+}
+
+Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const HierarchicalSpace& coarse) const {
+  const LevelHierarchy& h = *hierarchy_;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd k;
+  // w: the coarse functions that do not vanish on the cell (ids) in the cell level's local functions, known
+  // from the coarse leaf down.
+  auto visit = [&](auto&& self, int level, Index cell, std::span<const Index> ids, const Eigen::MatrixXd& w) -> void {
+    std::span<const Index> rows = ids;
+    Eigen::MatrixXd here;
+    const Eigen::MatrixXd* cur = &w;
+    if (rows.empty()) {
+      const Index ce = coarse.element_of(level, cell);
+      if (ce >= 0) {
+        const Element& cel = coarse.elements_[static_cast<std::size_t>(ce)];
+        rows = coarse.dofs(ce);
+        if (cel.coeff_begin < 0) {
+          here = Eigen::MatrixXd::Identity(cel.num_local, cel.num_local);
+        } else {
+          here = Eigen::Map<const Eigen::MatrixXd>(coarse.coeffs_.data() + cel.coeff_begin,
+                                                   cel.dof_end - cel.dof_begin, cel.num_local);
+        }
+        cur = &here;
+      }
+    }
+    const Index e = element_of(level, cell);
+    if (e >= 0) {
+      if (rows.empty()) {
+        throw InputError("hierarchical prolongation: the spaces are not nested (the coarse space refines cell " +
+                         std::to_string(cell) + " of level " + std::to_string(level) + ", the fine one does not)");
+      }
+      const Element& el = elements_[static_cast<std::size_t>(e)];
+      for (Index i = el.dof_begin; i < el.dof_end; ++i) {
+        const Index d = dofs_[static_cast<std::size_t>(i)];
+        if (dof_home_[static_cast<std::size_t>(d)] != e) continue;
+        const int j = dof_home_local_[static_cast<std::size_t>(d)];
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+          const double v = (*cur)(static_cast<Index>(r), j);
+          if (std::abs(v) > 1e-15) entries.emplace_back(d, rows[r], v);
+        }
+      }
+      return;
+    }
+    for (int slot = 0; slot < 4; ++slot) {
+      Eigen::MatrixXd next;
+      if (!rows.empty()) {
+        h.refinement(level, cell, slot, k);
+        next = *cur * k;
+      }
+      self(self, level + 1, h.child(level, cell, slot), rows, next);
+    }
+  };
+  for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, c, {}, Eigen::MatrixXd());
+  Eigen::SparseMatrix<double> p(num_dofs(), coarse.num_dofs());
+  p.setFromTriplets(entries.begin(), entries.end());
+  return p;
+}
+
+}  // namespace iga::basis::hierarchical

@@ -1,0 +1,97 @@
+#pragma once
+// Truncated hierarchical splines (THB; thesis Appendix A; Giannelli, Jüttler, Speleers 2012) on the nested
+// levels of a LevelHierarchy, as a Space the assembler uses unchanged.
+//
+// The mesh is a forest of cells: the cells of level 0, and the four children of every refined cell. Ω^l is the
+// union of the cells of level l that exist (level 0: the domain). Elements are the leaves (cells that are not
+// refined), in depth-first order of the forest. The functions (Kraft's selection rule):
+//   H^l = { B^l_f : supp B^l_f ⊆ Ω^l and supp B^l_f ⊄ Ω^{l+1} },
+// each truncated at every finer level m: its level-m coefficients of the B^m with supp ⊆ Ω^m are dropped.
+// On every leaf, each function is stored as its coefficients in the leaf level's local functions (per-element
+// extraction: the level's evaluator then gives values and derivatives).
+//
+// Dofs are numbered by first appearance in the depth-first traversal. Each dof's "home" is a leaf of its own level in its
+// support; reading there the function's local coefficient is a dual functional of the THB basis (Speleers and
+// Manni 2016): this gives exact coefficients of coarse-level splines (the geometry) and the prolongation
+// between nested hierarchical spaces.
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <memory>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "basis/hierarchical/level_hierarchy.hpp"
+#include "basis/space.hpp"
+
+namespace iga::basis::hierarchical {
+
+/// The refined cells of each level (level l: cells of level l whose four children exist).
+using RefinedCells = std::vector<std::unordered_set<Index>>;
+
+class HierarchicalSpace final : public Space {
+ public:
+  /// InputError when a refined cell of level l >= 1 is not in Ω^l (its parent is not refined).
+  HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hierarchy, RefinedCells refined);
+
+  std::string name() const override { return hierarchy_->name(); }
+  Index num_dofs() const override { return static_cast<Index>(dof_level_.size()); }
+  Index num_elements() const override { return static_cast<Index>(elements_.size()); }
+  ElementKind kind(Index e) const override;
+  std::span<const Index> dofs(Index e) const override;
+  Index max_local_dofs() const override { return max_local_; }
+  void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
+  std::vector<BoundaryEdge> boundary_edges() const override;
+  std::vector<std::string> boundary_part_names() const override { return hierarchy_->boundary_part_names(); }
+  std::vector<InteriorEdge> interior_edges() const override;
+  int level(Index e) const override { return elements_[static_cast<std::size_t>(e)].level; }
+
+  const LevelHierarchy& hierarchy() const { return *hierarchy_; }
+  const std::shared_ptr<const LevelHierarchy>& hierarchy_ptr() const { return hierarchy_; }
+  const RefinedCells& refined() const { return refined_; }
+  /// Cell (of its level) of element e.
+  Index cell(Index e) const { return elements_[static_cast<std::size_t>(e)].cell; }
+  /// Levels with elements: 1 + the deepest leaf level.
+  int num_levels() const { return num_levels_; }
+  /// Level of dof d.
+  int dof_level(Index d) const { return dof_level_[static_cast<std::size_t>(d)]; }
+  /// The element that is cell `cell` of level `level`, or -1 when that cell is no leaf.
+  Index element_of(int level, Index cell) const;
+  /// Whether cell `cell` of level `level` exists (lies in Ω^level) / is refined.
+  bool exists(int level, Index cell) const;
+  bool is_refined(int level, Index cell) const;
+  /// The leaf containing cell `cell` of level `level` (the cell itself or an ancestor); -1 when the cell is
+  /// refined.
+  Index leaf_containing(int level, Index cell) const;
+
+  /// Coefficients (num_dofs × columns) in this space of the level-0 spline with coefficients c0 (one row per
+  /// level-0 function, ordered by level-0 function index). Exact: the spline lies in the space.
+  Eigen::MatrixXd from_level0(const Eigen::MatrixXd& c0, Index level0_functions) const;
+  /// Prolongation from a coarser hierarchical space on the same hierarchy (every cell it refines, this one
+  /// refines too): fine coefficients = P × coarse coefficients. InputError when the spaces are not nested.
+  Eigen::SparseMatrix<double> prolongation_from(const HierarchicalSpace& coarse) const;
+
+ private:
+  struct Element {
+    int level = 0;
+    Index cell = 0;
+    Index dof_begin = 0, dof_end = 0;  // into dofs_
+    Index coeff_begin = -1;            // into coeffs_: (dofs × local functions) column-major; -1: identity
+    int num_local = 0;                 // level-local functions on the cell
+  };
+  void build();
+
+  std::shared_ptr<const LevelHierarchy> hierarchy_;
+  RefinedCells refined_;
+  std::vector<Element> elements_;
+  std::vector<Index> dofs_;
+  std::vector<double> coeffs_;
+  std::vector<int> dof_level_;
+  std::vector<Index> dof_home_;   // element
+  std::vector<int> dof_home_local_;  // local index of the function among the home leaf's level functions
+  std::vector<std::unordered_map<Index, Index>> leaf_index_;  // per level: cell -> element
+  Index max_local_ = 0;
+  int num_levels_ = 1;
+};
+
+}  // namespace iga::basis::hierarchical

@@ -1,0 +1,62 @@
+#pragma once
+// The nested spaces V^0 ⊂ V^1 ⊂ ... of one refinement scheme, described cell by cell: what a hierarchical
+// (THB) space needs of a scheme (thesis Appendix A; §4.2.5 for subdivision splines). Level l has cells (the
+// elements of V^l) and functions (its basis); every cell of level l has four children of level l+1 that tile
+// it; the functions of level l are combinations of those of level l+1 (two-scale relation), given cell by
+// cell. Tensor-product B-splines on dyadically refined knots implement it in basis/thb; the hierarchical space
+// itself (hierarchical_space.hpp) only talks to this interface.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "basis/basis_values.hpp"
+#include "basis/element_kind.hpp"
+#include "core/types.hpp"
+
+namespace iga::basis::hierarchical {
+
+class LevelHierarchy {
+ public:
+  virtual ~LevelHierarchy() = default;
+
+  /// Space::name() of the hierarchical spaces built on it (the backend's name).
+  virtual std::string name() const = 0;
+  /// The deepest level the scheme can index (cells and functions of deeper levels would overflow Index).
+  virtual int max_level() const = 0;
+  /// Cells of level 0, numbered 0..num_root_cells()-1 (deeper levels are never enumerated).
+  virtual Index num_root_cells() const = 0;
+  /// Cell c of level l + 1 in slot 0..3 of cell `cell` of level l. Child slot k covers the reference
+  /// sub-square child_map() gives.
+  virtual Index child(int level, Index cell, int slot) const = 0;
+  /// Parent (level - 1) of a cell of level >= 1, and the slot the cell has in it.
+  virtual Index parent(int level, Index cell, int& slot) const = 0;
+  /// The affine map from the reference square of a child in `slot` to its parent's: x_parent = a x + b.
+  virtual void child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const = 0;
+
+  /// The level's functions that are non-zero on the cell, in the local order of evaluate() (at most
+  /// max_local_functions()); returns their number.
+  virtual int local_functions(int level, Index cell, Index* out) const = 0;
+  virtual int max_local_functions() const = 0;
+  /// The cells of the level on which the function is non-zero (its support), in any order.
+  virtual void support(int level, Index function, std::vector<Index>& cells) const = 0;
+  /// Two-scale relation on one child: parent-local function i restricted to the child in `slot` equals
+  /// Σ_j k(i, j) × child-local function j (k: parent local × child local).
+  virtual void refinement(int level, Index cell, int slot, Eigen::MatrixXd& k) const = 0;
+  /// The level's local functions on the cell at reference points (unit square), with parametric
+  /// derivatives up to `derivatives` (BasisValues conventions).
+  virtual void evaluate(int level, Index cell, const Eigen::Matrix2Xd& pts, int derivatives,
+                        BasisValues& out) const = 0;
+  virtual ElementKind kind(int, Index) const { return {}; }
+
+  /// Boundary: the part of side `side` of the cell (side numbering as basis::side_point on the square), or
+  /// -1 when the side is interior.
+  virtual int boundary_part(int level, Index cell, int side) const = 0;
+  virtual std::vector<std::string> boundary_part_names() const = 0;
+  /// The cell of the same level across an interior side, and its side there (the shared side runs the other
+  /// way on it).
+  virtual Index neighbour(int level, Index cell, int side, int& their_side) const = 0;
+  /// Smoothness of the level's functions across an interior side (0: only C0).
+  virtual int continuity(int level, Index cell, int side) const = 0;
+};
+
+}  // namespace iga::basis::hierarchical
