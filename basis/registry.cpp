@@ -92,4 +92,11 @@ Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& fac
   return b.refine(geometry, steps, facts);
 }
 
+Refinement refine_marked(const Geometry& geometry, std::span<const Index> marked, int admissibility,
+                         BackendFacts& facts) {
+  const Backend& b = backend_of(geometry.space());
+  if (!b.refine_marked) throw UnsupportedError("local refinement of a '" + b.name + "' space is not implemented");
+  return b.refine_marked(geometry, marked, admissibility, facts);
+}
+
 }  // namespace iga::basis

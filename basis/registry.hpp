@@ -8,6 +8,7 @@
 #include <Eigen/Sparse>
 #include <functional>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,10 @@ struct Backend {
   /// Not nested backends: `steps` refinements of the net itself, applied before building (so a net that only
   /// its refinement makes admissible can be used); empty for nested backends.
   std::function<mesh::PolyMesh(const mesh::PolyMesh&, int steps, const BackendOptions&, BackendFacts&)> refine_net;
+  /// Local refinement: the marked elements of the geometry's space are split (plus what keeps the mesh admissible
+  /// of class `admissibility`, 0 = none), nested, with the prolongation; the map is unchanged. Empty when the
+  /// backend has no local refinement. Writes facts "marked", "added" (cells refined for admissibility), "levels".
+  std::function<Refinement(const Geometry&, std::span<const Index> marked, int admissibility, BackendFacts&)> refine_marked;
   /// The default quadrature specification for a degree (quadrature::make_rule_provider).
   std::function<std::string(int degree)> default_quadrature;
   /// Bézier patches of the geometry (elements that are not polynomial are counted in facts "bv_skipped").
@@ -104,6 +109,10 @@ Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* n
 /// `steps` >= 0 uniform refinements through the backend of the geometry's space (steps = 0: the geometry and
 /// the identity).
 Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts);
+
+/// Local refinement of the marked elements through the backend of the geometry's space (UnsupportedError naming
+/// the backend when it has none).
+Refinement refine_marked(const Geometry& geometry, std::span<const Index> marked, int admissibility, BackendFacts& facts);
 
 /// For backends whose dofs are some of a net's vertices and which refine by rebuilding from a refined net:
 /// the net with the control point of dof d at vertex vertex_of_dof(d) (planar geometries get z = 0; vertices

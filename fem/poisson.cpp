@@ -15,17 +15,37 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-PoissonResult solve_poisson(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
-                            const PoissonProblem& problem, const SolverOptions& solver) {
-  const basis::Space& space = geometry.space();
+struct PoissonSolver::Systems {
+  std::unique_ptr<Assembler> assembler;
+  DirichletConditions bc;
+  ReducedSystem reduced;
+  Eigen::VectorXd ones_load;  // m_i = ∫ φ_i, for the mean-zero constraint
+  std::chrono::steady_clock::time_point t0;
+};
+
+PoissonSolver::PoissonSolver(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+                             const PoissonProblem& problem, const SolverOptions& solver)
+    : geometry_(geometry), rules_(rules), problem_(problem), solver_(solver), sys_(std::make_unique<Systems>()) {}
+
+PoissonSolver::~PoissonSolver() = default;
+
+const Assembler& PoissonSolver::assembler() const {
+  if (!sys_->assembler) throw InputError("PoissonSolver: setup() has not run");
+  return *sys_->assembler;
+}
+
+void PoissonSolver::setup() {
+  if (done_ >= 1) return;
+  const basis::Space& space = geometry_.space();
+  const PoissonProblem& problem = problem_;
   const int parts = static_cast<int>(space.boundary_part_names().size());
   for (int p : problem.neumann_parts) {
     if (p < 0 || p >= parts) throw InputError("Neumann boundary part " + std::to_string(p) + " does not exist");
   }
   if (problem.reaction < 0) throw InputError("reaction coefficient must be >= 0");
-  std::vector<basis::BoundaryEdge> dirichlet_edges, neumann_edges;
   Eigen::VectorXd where;
-  for (const basis::BoundaryEdge& e : space.boundary_edges()) {
+  const std::vector<basis::BoundaryEdge> boundary = space.boundary_edges();
+  for (const basis::BoundaryEdge& e : boundary) {
     bool neumann = std::find(problem.neumann_parts.begin(), problem.neumann_parts.end(), e.part) !=
                    problem.neumann_parts.end();
     if (!neumann && problem.neumann_where) {
@@ -34,28 +54,35 @@ PoissonResult solve_poisson(const basis::Geometry& geometry, const quadrature::R
       basis::BasisValues bv;
       basis::GeometryValues gv;
       space.evaluate(e.element, mid, 1, bv);
-      geometry.evaluate(e.element, bv, gv, false);
+      geometry_.evaluate(e.element, bv, gv, false);
       problem.neumann_where->values(gv.x, where);
       neumann = where(0) > 0.0;
     }
-    (neumann ? neumann_edges : dirichlet_edges).push_back(e);
+    (neumann ? neumann_edges_ : dirichlet_edges_).push_back(e);
   }
-  if (!neumann_edges.empty() && !problem.neumann) throw InputError("Neumann boundary edges are selected but no Neumann data given");
-  const bool singular = dirichlet_edges.empty() && problem.reaction == 0.0;
-  if (singular && !problem.mean_zero) {
-    throw InputError(std::string(space.boundary_edges().empty() ? "closed surface" : "no Dirichlet boundary") +
+  if (!neumann_edges_.empty() && !problem.neumann) throw InputError("Neumann boundary edges are selected but no Neumann data given");
+  singular_ = dirichlet_edges_.empty() && problem.reaction == 0.0;
+  if (singular_ && !problem.mean_zero) {
+    throw InputError(std::string(boundary.empty() ? "closed surface" : "no Dirichlet boundary") +
                      " and no reaction term: the solution is determined only up to a constant; keep a boundary "
                      "part Dirichlet, give a reaction coefficient c > 0, or ask for the mean-zero solution");
   }
+  r_.dofs = space.num_dofs();
+  r_.elements = space.num_elements();
+  r_.neumann_edges = static_cast<Index>(neumann_edges_.size());
+  r_.dirichlet_edges = static_cast<Index>(dirichlet_edges_.size());
+  sys_->t0 = std::chrono::steady_clock::now();
+  sys_->assembler = std::make_unique<Assembler>(geometry_, rules_);
+  sys_->assembler->plan();
+  r_.pattern_seconds = seconds_since(sys_->t0);
+  done_ = 1;
+}
 
-  PoissonResult r;
-  r.dofs = space.num_dofs();
-  r.elements = space.num_elements();
-  const auto t0 = std::chrono::steady_clock::now();
-  Assembler assembler(geometry, rules);
-  assembler.plan();
-  r.pattern_seconds = seconds_since(t0);
-
+void PoissonSolver::assemble() {
+  if (done_ >= 2) return;
+  setup();
+  const Assembler& assembler = *sys_->assembler;
+  const PoissonProblem& problem = problem_;
   const StiffnessForm stiffness;
   const MassForm reaction(problem.reaction);
   std::vector<const BilinearForm*> bilinear{&stiffness};
@@ -69,59 +96,77 @@ PoissonResult solve_poisson(const basis::Geometry& geometry, const quadrature::R
   Eigen::SparseMatrix<double> a;
   Eigen::VectorXd b;
   const AssemblyStats stats = assembler.assemble(bilinear, linear, a, b);
-  r.domain_measure = stats.measure;
-  r.quadrature_points = stats.quadrature_points;
+  r_.domain_measure = stats.measure;
+  r_.quadrature_points = stats.quadrature_points;
 
-  if (!neumann_edges.empty()) {
+  if (!neumann_edges_.empty()) {
     Eigen::VectorXd bn;
     const BoundaryLoadForm flux(problem.neumann);
-    assembler.assemble_boundary(neumann_edges, nullptr, &flux, nullptr, &bn);
+    assembler.assemble_boundary(neumann_edges_, nullptr, &flux, nullptr, &bn);
     b += bn;
   }
-  r.neumann_edges = static_cast<Index>(neumann_edges.size());
-  r.dirichlet_edges = static_cast<Index>(dirichlet_edges.size());
-  DirichletConditions bc =
-      project_dirichlet(assembler, dirichlet_edges, problem.dirichlet ? problem.dirichlet : constant_function(0.0));
-  Eigen::VectorXd ones_load;  // m_i = ∫ φ_i, for the mean-zero constraint
-  if (singular) {
+  DirichletConditions& bc = sys_->bc;
+  bc = project_dirichlet(assembler, dirichlet_edges_, problem.dirichlet ? problem.dirichlet : constant_function(0.0));
+  if (singular_) {
     // The kernel is the constants (Σφ_i = 1): make the load orthogonal to them, pin one dof, and shift to
     // mean zero after the solve.
     Eigen::SparseMatrix<double> unused;
     const SourceForm one(constant_function(1.0));
     const std::vector<const LinearForm*> lf{&one};
-    assembler.assemble({}, lf, unused, ones_load);
-    r.mean_zero = true;
-    r.compatibility_defect = b.sum();
-    b -= (r.compatibility_defect / r.domain_measure) * ones_load;
+    assembler.assemble({}, lf, unused, sys_->ones_load);
+    r_.mean_zero = true;
+    r_.compatibility_defect = b.sum();
+    b -= (r_.compatibility_defect / r_.domain_measure) * sys_->ones_load;
     bc.dofs = {0};
     bc.values = Eigen::VectorXd::Zero(1);
   }
-  r.dirichlet_dofs = static_cast<Index>(bc.dofs.size());
-  const ReducedSystem sys = eliminate(a, b, bc);
-  r.free_dofs = static_cast<Index>(sys.free.size());
-  r.assembly_seconds = seconds_since(t0);
+  r_.dirichlet_dofs = static_cast<Index>(bc.dofs.size());
+  sys_->reduced = eliminate(a, b, bc);
+  r_.free_dofs = static_cast<Index>(sys_->reduced.free.size());
+  r_.assembly_seconds = seconds_since(sys_->t0);
+  done_ = 2;
+}
 
-  const SolveResult s = solve(sys.a, sys.b, solver);
-  r.solve_seconds = s.seconds;
-  r.solver = s.solver;
-  r.residual_norm = s.residual_norm;
-  r.solver_iterations = s.iterations;
-  r.u = expand(sys, s.x, bc, space.num_dofs());
-  std::shared_ptr<const Function> exact = problem.exact;
-  if (singular) {
-    r.u.array() -= ones_load.dot(r.u) / r.domain_measure;
-    if (exact) {
-      // Compare with the mean-zero representative of the exact solution.
-      const Eigen::VectorXd mean = assembler.integrate(1, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
-        Eigen::VectorXd ue;
-        exact->values(ctx.geo.x, ue);
-        out(0) = ue.dot(ctx.weight);
-      });
-      exact = shifted_function(exact, -mean(0) / r.domain_measure);
-    }
+void PoissonSolver::solve() {
+  if (done_ >= 3) return;
+  assemble();
+  const SolveResult s = fem::solve(sys_->reduced.a, sys_->reduced.b, solver_);
+  r_.solve_seconds = s.seconds;
+  r_.solver = s.solver;
+  r_.residual_norm = s.residual_norm;
+  r_.solver_iterations = s.iterations;
+  r_.u = expand(sys_->reduced, s.x, sys_->bc, geometry_.space().num_dofs());
+  if (singular_) r_.u.array() -= sys_->ones_load.dot(r_.u) / r_.domain_measure;
+  done_ = 3;
+}
+
+void PoissonSolver::errors() {
+  if (done_ >= 4) return;
+  solve();
+  const auto t0 = std::chrono::steady_clock::now();
+  std::shared_ptr<const Function> exact = problem_.exact;
+  if (exact && singular_) {
+    // Compare with the mean-zero representative of the exact solution.
+    const Eigen::VectorXd mean = sys_->assembler->integrate(1, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+      Eigen::VectorXd ue;
+      exact->values(ctx.geo.x, ue);
+      out(0) = ue.dot(ctx.weight);
+    });
+    exact = shifted_function(exact, -mean(0) / r_.domain_measure);
   }
-  if (exact) r.errors = compute_errors(assembler, r.u, *exact);
-  return r;
+  if (exact) r_.errors = compute_errors(*sys_->assembler, r_.u, *exact);
+  r_.error_seconds = seconds_since(t0);
+  done_ = 4;
+}
+
+PoissonResult solve_poisson(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+                            const PoissonProblem& problem, const SolverOptions& solver) {
+  PoissonSolver s(geometry, rules, problem, solver);
+  s.setup();
+  s.assemble();
+  s.solve();
+  s.errors();
+  return s.result();
 }
 
 }  // namespace iga::fem

@@ -37,6 +37,7 @@ struct PoissonResult {
   double pattern_seconds = 0.0;     ///< sparsity pattern and colouring
   double assembly_seconds = 0.0;    ///< pattern + element loop + boundary terms + Dirichlet projection
   double solve_seconds = 0.0;
+  double error_seconds = 0.0;       ///< error norms (with an exact solution)
   std::string solver;
   double residual_norm = 0.0;       ///< relative residual of the reduced system
   Index solver_iterations = 0;
@@ -46,7 +47,48 @@ struct PoissonResult {
   double compatibility_defect = 0;  ///< ∫f + ∫g_N before it was removed (mean_zero only)
 };
 
-/// Solves the problem. InputError for an ill-posed set-up (every boundary part Neumann, or no boundary,
+/// The pipeline in steps (deal.II step-6's setup_system / assemble_system / solve, DESIGN item 5), for loops
+/// that need the pieces: setup() → assemble() → solve() → errors(), each once and in this order (a step
+/// called out of order runs the missing ones first). The solver keeps references to geometry, rules and problem.
+class PoissonSolver {
+ public:
+  PoissonSolver(const basis::Geometry& geometry, const quadrature::RuleProvider& rules, const PoissonProblem& problem,
+                const SolverOptions& solver = {});
+  ~PoissonSolver();
+  PoissonSolver(const PoissonSolver&) = delete;
+  PoissonSolver& operator=(const PoissonSolver&) = delete;
+
+  /// Checks the problem, splits the boundary into Dirichlet and Neumann edges, builds the sparsity pattern.
+  /// InputError for an ill-posed set-up (see solve_poisson).
+  void setup();
+  /// Element loop, Neumann load, Dirichlet projection, elimination (and the mean-zero treatment).
+  void assemble();
+  /// The reduced system's solution, expanded to all dofs (result().u).
+  void solve();
+  /// Error norms against problem.exact (nothing without one).
+  void errors();
+
+  const PoissonResult& result() const { return r_; }
+  const basis::Geometry& geometry() const { return geometry_; }
+  const PoissonProblem& problem() const { return problem_; }
+  const Assembler& assembler() const;
+  const std::vector<basis::BoundaryEdge>& neumann_edges() const { return neumann_edges_; }
+  const std::vector<basis::BoundaryEdge>& dirichlet_edges() const { return dirichlet_edges_; }
+
+ private:
+  struct Systems;
+  const basis::Geometry& geometry_;
+  const quadrature::RuleProvider& rules_;
+  const PoissonProblem& problem_;
+  SolverOptions solver_;
+  PoissonResult r_;
+  std::vector<basis::BoundaryEdge> neumann_edges_, dirichlet_edges_;
+  bool singular_ = false;
+  int done_ = 0;  // steps completed: 1 setup, 2 assemble, 3 solve, 4 errors
+  std::unique_ptr<Systems> sys_;
+};
+
+/// Solves the problem: PoissonSolver's setup, assemble, solve and errors. InputError for an ill-posed set-up (every boundary part Neumann, or no boundary,
 /// with c = 0 and no mean-zero constraint), for Neumann parts out of range, or Neumann parts without data.
 PoissonResult solve_poisson(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
                             const PoissonProblem& problem, const SolverOptions& solver = {});

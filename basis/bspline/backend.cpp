@@ -5,6 +5,8 @@
 #include "basis/bspline/knot_insertion.hpp"
 #include "basis/bspline/patches.hpp"
 #include "basis/bspline/tensor_space.hpp"
+#include "basis/hierarchical/refine.hpp"
+#include "basis/thb/dyadic_levels.hpp"
 #include "basis/registry.hpp"
 #include "core/error.hpp"
 
@@ -12,6 +14,41 @@ namespace iga::basis {
 namespace {
 
 using bspline::TensorSpace;
+
+using hierarchical::HierarchicalSpace;
+
+// The THB space of a geometry: its own, or (a tensor-product patch) the patch as level 0 with the permutation
+// from the patch's dofs to the THB dofs.
+std::shared_ptr<const HierarchicalSpace> thb_of(const Geometry& g, Eigen::SparseMatrix<double>* to_thb) {
+  if (auto h = std::dynamic_pointer_cast<const HierarchicalSpace>(g.space_ptr())) return h;
+  const TensorSpace* t = bspline::tensor_space(g.space());
+  if (!t) throw InputError("a '" + g.space().name() + "' space is not a B-spline space");
+  auto h = thb::coarse_thb_space(t->knots_u(), t->knots_v());
+  to_thb->resize(h->num_dofs(), t->num_dofs());
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Index d = 0; d < h->num_dofs(); ++d) entries.emplace_back(d, h->dof_function(d), 1.0);
+  to_thb->setFromTriplets(entries.begin(), entries.end());
+  return h;
+}
+
+// THB refinement of the marked elements (a patch becomes level 0 first); the control points are prolongated.
+Refinement refine_thb(const Geometry& geometry, std::span<const Index> marked, int admissibility, BackendFacts& facts) {
+  Eigen::SparseMatrix<double> to_thb;
+  const auto coarse = thb_of(geometry, &to_thb);
+  const hierarchical::LocalRefinement r = marked.size() == static_cast<std::size_t>(coarse->num_elements()) && admissibility == 0
+                                              ? hierarchical::refine_all(*coarse)
+                                              : hierarchical::refine_marked(*coarse, marked, admissibility);
+  Eigen::SparseMatrix<double> p = r.space->prolongation_from(*coarse);
+  if (to_thb.size() > 0) {
+    Eigen::SparseMatrix<double> composed = p * to_thb;
+    p.swap(composed);
+  }
+  Eigen::MatrixXd cp = p * geometry.control_points();
+  facts.counts["marked"] = r.marked;
+  facts.counts["added"] = r.added;
+  facts.counts["levels"] = r.space->num_levels();
+  return {Geometry(r.space, std::move(cp)), std::move(p), true};
+}
 
 const TensorSpace& tensor_of(const Geometry& g) {
   const TensorSpace* t = bspline::tensor_space(g.space());
@@ -21,7 +58,19 @@ const TensorSpace& tensor_of(const Geometry& g) {
 
 // Each step inserts the midpoint of every non-empty knot interval in both directions (Oslo, thesis §2.3.1);
 // the refinement matrices of the steps compose.
-Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts&) {
+Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts& facts) {
+  if (!bspline::tensor_space(geometry.space())) {
+    // A THB space: every element split, `steps` times.
+    Refinement r = refine_uniform(geometry, 0, facts);
+    for (int s = 0; s < steps; ++s) {
+      std::vector<Index> all(static_cast<std::size_t>(r.geometry.space().num_elements()));
+      for (std::size_t e = 0; e < all.size(); ++e) all[e] = static_cast<Index>(e);
+      Refinement next = refine_thb(r.geometry, all, 0, facts);
+      Eigen::SparseMatrix<double> composed = next.prolongation * r.prolongation;
+      r = {next.geometry, std::move(composed), true};
+    }
+    return r;
+  }
   std::shared_ptr<const TensorSpace> coarse(geometry.space_ptr(), &tensor_of(geometry));
   Eigen::SparseMatrix<double> total;
   for (int s = 0; s < steps; ++s) {
@@ -42,6 +91,9 @@ Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts&) 
 
 // Every element by Bézier extraction: BB coefficient (a, b) = Σ_ij C_u(i, a) C_v(j, b) P_dof(i, j).
 std::vector<BezierPatch> extracted_patches(const Geometry& geometry, const BackendOptions&, BackendFacts&) {
+  if (!bspline::tensor_space(geometry.space())) {
+    throw UnsupportedError("Bezier export of a THB (hierarchical B-spline) space is not implemented");
+  }
   const TensorSpace& space = tensor_of(geometry);
   Eigen::MatrixXd cp = Eigen::MatrixXd::Zero(geometry.control_points().rows(), 3);
   cp.leftCols(geometry.dim()) = geometry.control_points();
@@ -88,6 +140,7 @@ Backend bspline_backend() {
     return bspline::make_quarter_annulus(o.degree == BackendOptions::kUnset ? 3 : o.degree);
   };
   b.refine = refine_midpoints;
+  b.refine_marked = refine_thb;
   b.default_quadrature = [](int degree) { return "gauss:" + std::to_string(degree + 1); };
   b.bezier_patches = extracted_patches;
   return b;

@@ -129,6 +129,7 @@ void HierarchicalSpace::build() {
         if (s.inside && !s.inside_next) {
           s.dof = static_cast<Index>(dof_level_.size());
           dof_level_.push_back(level);
+          dof_function_.push_back(fbuf[static_cast<std::size_t>(j)]);
           dof_home_.push_back(-1);
           dof_home_local_.push_back(-1);
         } else {

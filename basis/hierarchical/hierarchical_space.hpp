@@ -53,8 +53,9 @@ class HierarchicalSpace final : public Space {
   Index cell(Index e) const { return elements_[static_cast<std::size_t>(e)].cell; }
   /// Levels with elements: 1 + the deepest leaf level.
   int num_levels() const { return num_levels_; }
-  /// Level of dof d.
+  /// Level of dof d, and the index of its function among its level's functions.
   int dof_level(Index d) const { return dof_level_[static_cast<std::size_t>(d)]; }
+  Index dof_function(Index d) const { return dof_function_[static_cast<std::size_t>(d)]; }
   /// The element that is cell `cell` of level `level`, or -1 when that cell is no leaf.
   Index element_of(int level, Index cell) const;
   /// Whether cell `cell` of level `level` exists (lies in Ω^level) / is refined.
@@ -87,6 +88,7 @@ class HierarchicalSpace final : public Space {
   std::vector<Index> dofs_;
   std::vector<double> coeffs_;
   std::vector<int> dof_level_;
+  std::vector<Index> dof_function_;
   std::vector<Index> dof_home_;   // element
   std::vector<int> dof_home_local_;  // local index of the function among the home leaf's level functions
   std::vector<std::unordered_map<Index, Index>> leaf_index_;  // per level: cell -> element
