@@ -22,7 +22,7 @@ Geometry::Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_p
   if (!control_points_.allFinite()) throw InputError("geometry: a control point has a non-finite coordinate");
 }
 
-void Geometry::evaluate(Index e, const BasisValues& basis, GeometryValues& out, bool check) const {
+void Geometry::evaluate(Index e, const BasisValues& basis, GeometryValues& out, bool check, int derivatives) const {
   const auto dofs = space_->dofs(e);
   const Index n = static_cast<Index>(dofs.size());
   const Index q = basis.value.cols();
@@ -39,6 +39,11 @@ void Geometry::evaluate(Index e, const BasisValues& basis, GeometryValues& out, 
   out.x.noalias() = local.transpose().lazyProduct(basis.value);
   out.xu.noalias() = local.transpose().lazyProduct(basis.du);
   out.xv.noalias() = local.transpose().lazyProduct(basis.dv);
+  if (derivatives >= 2) {
+    out.xuu.noalias() = local.transpose().lazyProduct(basis.duu);
+    out.xuv.noalias() = local.transpose().lazyProduct(basis.duv);
+    out.xvv.noalias() = local.transpose().lazyProduct(basis.dvv);
+  }
   // Metric G = J^T J, its determinant |x_u × x_v|^2 (no cancellation), and T = J G^{-1}, for all points
   // at once (row-wise array expressions over the q columns).
   const auto xu = out.xu.array();

@@ -17,6 +17,7 @@ struct GeometryValues {
   /// Gradient transform T = J G^{-1} with G = J^T J: the physical (surface) gradient of a function with
   /// parametric derivatives (f_u, f_v) is tu * f_u + tv * f_v.
   Eigen::Matrix3Xd tu, tv;
+  Eigen::Matrix3Xd xuu, xuv, xvv;  ///< second parametric derivatives of the map (when asked for: derivatives 2)
 };
 
 class Geometry {
@@ -33,7 +34,8 @@ class Geometry {
   /// Map data of element e from basis values already evaluated there (derivatives >= 1).
   /// With check, throws NumericalError naming the element when the map is degenerate (measure 0 or not
   /// finite) at a point; without, such points get tu = tv = 0 (used by output, which samples element edges).
-  void evaluate(Index e, const BasisValues& basis, GeometryValues& out, bool check = true) const;
+  /// With derivatives = 2 (basis evaluated with second derivatives) also xuu, xuv, xvv.
+  void evaluate(Index e, const BasisValues& basis, GeometryValues& out, bool check = true, int derivatives = 1) const;
   /// Convenience: evaluates the basis first.
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, GeometryValues& out) const;
 

@@ -35,6 +35,54 @@ void parallel_for(Index n, Body&& body) {
 }
 }  // namespace
 
+namespace {
+// ctx.laplacian (and, planar, ctx.hessian) from the parametric first and second derivatives of the functions and
+// the map, for all points at once.
+void prepare_second_derivatives(ElementContext& ctx) {
+  const basis::GeometryValues& g = ctx.geo;
+  const Eigen::Index q = ctx.num_points();
+  thread_local Eigen::ArrayXXd m;  // rows: g11, g12, g22, inverse metric, Christoffel contractions
+  m.resize(8, q);
+  m.row(0) = g.xu.colwise().squaredNorm().array();
+  m.row(1) = (g.xu.array() * g.xv.array()).colwise().sum();
+  m.row(2) = g.xv.colwise().squaredNorm().array();
+  const Eigen::ArrayXXd det = m.row(0) * m.row(2) - m.row(1).square();
+  m.row(3) = m.row(2) / det;   // g^11
+  m.row(4) = -m.row(1) / det;  // g^12
+  m.row(5) = m.row(0) / det;   // g^22
+  // c_l = g^{ij} x_{,l} · x_{,ij} (l = u, v); the first-derivative coefficients are g^{kl} c_l.
+  auto dot = [](const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) { return (a.array() * b.array()).colwise().sum(); };
+  const Eigen::ArrayXXd cu = m.row(3) * dot(g.xu, g.xuu) + 2 * m.row(4) * dot(g.xu, g.xuv) + m.row(5) * dot(g.xu, g.xvv);
+  const Eigen::ArrayXXd cv = m.row(3) * dot(g.xv, g.xuu) + 2 * m.row(4) * dot(g.xv, g.xuv) + m.row(5) * dot(g.xv, g.xvv);
+  m.row(6) = m.row(3) * cu + m.row(4) * cv;  // coefficient of φ_u
+  m.row(7) = m.row(4) * cu + m.row(5) * cv;  // coefficient of φ_v
+  const basis::BasisValues& b = ctx.basis;
+  ctx.laplacian = (b.duu.array().rowwise() * m.row(3) + b.duv.array().rowwise() * (2 * m.row(4)) +
+                   b.dvv.array().rowwise() * m.row(5) - b.du.array().rowwise() * m.row(6) -
+                   b.dv.array().rowwise() * m.row(7)).matrix();
+  if (ctx.dim != 2) {
+    ctx.hessian.resize(0, 0);
+    return;
+  }
+  // M_ij = φ_{,ij} − ∇_x φ · x_{,ij}; H_ab = Σ_ij K_ia M_ij K_jb with K = J^{-1}: K_ua = tu(a), K_va = tv(a).
+  const Eigen::Index n = b.value.rows();
+  thread_local Eigen::ArrayXXd muu, muv, mvv;
+  const auto gx = ctx.grad_component(0).array();
+  const auto gy = ctx.grad_component(1).array();
+  muu = b.duu.array() - gx.rowwise() * g.xuu.row(0).array() - gy.rowwise() * g.xuu.row(1).array();
+  muv = b.duv.array() - gx.rowwise() * g.xuv.row(0).array() - gy.rowwise() * g.xuv.row(1).array();
+  mvv = b.dvv.array() - gx.rowwise() * g.xvv.row(0).array() - gy.rowwise() * g.xvv.row(1).array();
+  ctx.hessian.resize(n, 3 * q);
+  const int ab[3][2] = {{0, 0}, {0, 1}, {1, 1}};
+  for (int k = 0; k < 3; ++k) {
+    const auto ua = g.tu.row(ab[k][0]).array(), va = g.tv.row(ab[k][0]).array();
+    const auto ub = g.tu.row(ab[k][1]).array(), vb = g.tv.row(ab[k][1]).array();
+    ctx.hessian.middleCols(k * q, q) = (muu.rowwise() * (ua * ub) + muv.rowwise() * (ua * vb + va * ub) +
+                                        mvv.rowwise() * (va * vb)).matrix();
+  }
+}
+}  // namespace
+
 Assembler::Assembler(const basis::Geometry& geometry, const quadrature::RuleProvider& rules)
     : geometry_(geometry), rules_(rules) {}
 
@@ -49,13 +97,14 @@ const AssemblyPlan& Assembler::plan() const {
   return *plan_;
 }
 
-void Assembler::prepare(Index e, ElementContext& ctx) const {
+void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
   const basis::Space& space = geometry_.space();
   ctx.element = e;
   ctx.rule = &rules_.rule(space.kind(e));
   ctx.dim = geometry_.dim();
-  space.evaluate(e, ctx.rule->points, 1, ctx.basis);
-  geometry_.evaluate(e, ctx.basis, ctx.geo);
+  ctx.derivatives = derivatives;
+  space.evaluate(e, ctx.rule->points, derivatives, ctx.basis);
+  geometry_.evaluate(e, ctx.basis, ctx.geo, true, derivatives);
   ctx.weight = ctx.rule->weights.cwiseProduct(ctx.geo.measure);
   const Eigen::Index q = ctx.rule->size();
   ctx.grad.resize(ctx.basis.value.rows(), ctx.dim * q);
@@ -63,6 +112,7 @@ void Assembler::prepare(Index e, ElementContext& ctx) const {
     ctx.grad.middleCols(c * q, q) = ctx.basis.du.array().rowwise() * ctx.geo.tu.row(c).array() +
                                     ctx.basis.dv.array().rowwise() * ctx.geo.tv.row(c).array();
   }
+  if (derivatives >= 2) prepare_second_derivatives(ctx);
 }
 
 AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
@@ -135,30 +185,10 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
   std::vector<Eigen::Triplet<double>> entries;
   if (b) *b = Eigen::VectorXd::Zero(n);
   BoundaryContext ctx;
-  Eigen::Matrix2Xd pts;
   Eigen::MatrixXd k;
   Eigen::VectorXd f;
   for (const basis::BoundaryEdge& edge : edges) {
-    const basis::ElementKind kind = space.kind(edge.element);
-    const basis::Shape shape = kind.shape;
-    const quadrature::Rule1D& line = rules_.side_rule(kind, edge.side);
-    const Index q = line.size();
-    pts.resize(2, q);
-    for (Index i = 0; i < q; ++i) pts.col(i) = basis::side_point(shape, edge.side, line.points(i));
-    const Eigen::Vector2d dt = basis::side_tangent(shape, edge.side);
-    ctx.element = edge.element;
-    ctx.side = edge.side;
-    space.evaluate(edge.element, pts, 1, ctx.basis);
-    geometry_.evaluate(edge.element, ctx.basis, ctx.geo, false);
-    ctx.weight.resize(q);
-    ctx.conormal.resize(3, q);
-    for (Index i = 0; i < q; ++i) {
-      const Eigen::Vector3d tangent = dt(0) * ctx.geo.xu.col(i) + dt(1) * ctx.geo.xv.col(i);
-      const double len = tangent.norm();
-      ctx.weight(i) = line.weights(i) * len;
-      ctx.conormal.col(i) = len > 0 ? Eigen::Vector3d((tangent / len).cross(ctx.geo.normal.col(i)))
-                                    : Eigen::Vector3d::Zero();
-    }
+    prepare_side(edge.element, edge.side, 0.0, 1.0, rules_.side_rule(space.kind(edge.element), edge.side), ctx);
     const auto dofs = space.dofs(edge.element);
     const Index nloc = static_cast<Index>(dofs.size());
     if (bilinear && a) {
@@ -182,22 +212,49 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
   }
 }
 
+void Assembler::prepare_side(Index e, int side, double t0, double t1, const quadrature::Rule1D& line,
+                             BoundaryContext& ctx) const {
+  const basis::Space& space = geometry_.space();
+  const basis::Shape shape = space.kind(e).shape;
+  const Index q = line.size();
+  thread_local Eigen::Matrix2Xd pts;
+  pts.resize(2, q);
+  for (Index i = 0; i < q; ++i) pts.col(i) = basis::side_point(shape, side, t0 + line.points(i) * (t1 - t0));
+  const Eigen::Vector2d dt = basis::side_tangent(shape, side) * (t1 - t0);
+  ctx.element = e;
+  ctx.side = side;
+  space.evaluate(e, pts, 1, ctx.basis);
+  geometry_.evaluate(e, ctx.basis, ctx.geo, false);
+  ctx.weight.resize(q);
+  ctx.conormal.resize(3, q);
+  for (Index i = 0; i < q; ++i) {
+    const Eigen::Vector3d tangent = dt(0) * ctx.geo.xu.col(i) + dt(1) * ctx.geo.xv.col(i);
+    const double len = tangent.norm();
+    ctx.weight(i) = line.weights(i) * len;
+    // The side's own direction (counter-clockwise on the element) gives the outward conormal, whatever the
+    // sign of t1 - t0.
+    const Eigen::Vector3d unit = (t1 >= t0 ? 1.0 : -1.0) * tangent / len;
+    ctx.conormal.col(i) = len > 0 ? Eigen::Vector3d(unit.cross(ctx.geo.normal.col(i))) : Eigen::Vector3d::Zero();
+  }
+}
+
 Eigen::MatrixXd Assembler::integrate_per_element(
-    int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const {
+    int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f, int derivatives) const {
   const Index ne = geometry_.space().num_elements();
   Eigen::MatrixXd partial = Eigen::MatrixXd::Zero(n, ne);
   std::vector<ElementContext> contexts(static_cast<std::size_t>(omp_get_max_threads()));
   parallel_for(ne, [&](Index e) {
     ElementContext& ctx = contexts[static_cast<std::size_t>(omp_get_thread_num())];
-    prepare(e, ctx);
+    prepare(e, ctx, derivatives);
     f(ctx, partial.col(e));
   });
   return partial;
 }
 
 Eigen::VectorXd Assembler::integrate(int n,
-                                     const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const {
-  const Eigen::MatrixXd partial = integrate_per_element(n, f);
+                                     const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f,
+                                     int derivatives) const {
+  const Eigen::MatrixXd partial = integrate_per_element(n, f, derivatives);
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(n);
   for (Index e = 0; e < partial.cols(); ++e) sum += partial.col(e);
   return sum;

@@ -42,14 +42,23 @@ class Assembler {
   /// The `n` element quantities computed by f(ctx, out) for every element (out has n entries, zeroed): an
   /// n × num_elements matrix, column e for element e (deal.II's per-cell vectors: error indicators,
   /// estimators). Computed in parallel; each column by one call, so the result does not depend on the threads.
+  /// derivatives: what prepare() evaluates (2: second derivatives through the map as well).
   Eigen::MatrixXd integrate_per_element(int n,
-                                        const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const;
+                                        const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f,
+                                        int derivatives = 1) const;
   /// Their sum over elements, reduced in element order (reproducible). For error norms and measures.
-  Eigen::VectorXd integrate(int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f) const;
+  Eigen::VectorXd integrate(int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f,
+                            int derivatives = 1) const;
+
+  /// Fills ctx on the piece [t0, t1] of side `side` of element e (side parameter, side_point conventions) at the
+  /// points s of `line` on [0, 1] (side parameter t0 + s (t1 - t0)): basis with first derivatives, geometry
+  /// (unchecked), weight = line weight × |dx/ds|, outward conormal. The whole side is t0 = 0, t1 = 1.
+  void prepare_side(Index e, int side, double t0, double t1, const quadrature::Rule1D& line, BoundaryContext& ctx) const;
 
   /// Fills ctx for element e at its rule's points (basis with first derivatives, geometry, weights,
-  /// physical gradients).
-  void prepare(Index e, ElementContext& ctx) const;
+  /// physical gradients; with derivatives = 2 also ctx.laplacian and, planar, ctx.hessian — update flags in the
+  /// manner of deal.II's).
+  void prepare(Index e, ElementContext& ctx, int derivatives = 1) const;
 
  private:
   const basis::Geometry& geometry_;

@@ -23,6 +23,13 @@ struct ElementContext {
   /// component c at the q points (one block per component, so a stiffness matrix is one dense product).
   Eigen::MatrixXd grad;
   int dim = 2;  ///< number of gradient components stored: 2 (planar) or 3 (surface)
+  int derivatives = 1;  ///< what was prepared: 1 (values, gradients) or 2 (also laplacian, hessian)
+  /// derivatives 2: the Laplacian of each local function (nloc × q) through the map — on surfaces the
+  /// Laplace–Beltrami operator Δ_Γ φ = g^{ij} (φ_{,ij} − Γ^k_{ij} φ_{,k}), Γ^k_{ij} = g^{kl} x_{,l} · x_{,ij}.
+  Eigen::MatrixXd laplacian;
+  /// derivatives 2, planar domains only: physical Hessians, nloc × (3q) as blocks xx, xy, yy (like grad),
+  /// H_x φ = J^{-T} (H_u φ − Σ_k ∂φ/∂x_k H_u x_k) J^{-1}. Empty on surfaces (only Δ_Γ is supported there).
+  Eigen::MatrixXd hessian;
 
   Eigen::Index num_points() const { return weight.size(); }
   /// Component c of the gradients (nloc × q).

@@ -1,0 +1,79 @@
+#include "refine/adaptive.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace iga::refine {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+std::vector<AdaptiveStep> adaptive_solve(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+                                         const fem::PoissonProblem& problem, const fem::SolverOptions& solver,
+                                         const AdaptiveOptions& options, const StepCallback& on_step) {
+  if (options.steps < 0) throw InputError("adaptive: steps must be >= 0");
+  const basis::Backend& backend = basis::backend_of(geometry.space());
+  if (!backend.refine_marked) {
+    throw UnsupportedError("adaptive refinement: the '" + backend.name + "' basis has no local refinement");
+  }
+  std::vector<AdaptiveStep> history;
+  basis::Geometry current = geometry;
+  for (int step = 0;; ++step) {
+    AdaptiveStep s;
+    s.step = step;
+    fem::PoissonSolver ps(current, rules, problem, solver);
+    auto t = std::chrono::steady_clock::now();
+    ps.setup();
+    s.setup_seconds = seconds_since(t);
+    ps.assemble();
+    ps.solve();
+    ps.errors();
+    const fem::PoissonResult& r = ps.result();
+    s.assembly_seconds = r.assembly_seconds - r.pattern_seconds;
+    s.setup_seconds = r.pattern_seconds;
+    s.solve_seconds = r.solve_seconds;
+    s.error_seconds = r.error_seconds;
+    const fem::Estimate est = fem::estimate_residual(ps);
+    s.estimate_seconds = est.seconds;
+    s.dofs = r.dofs;
+    s.elements = r.elements;
+    s.quadrature_points = r.quadrature_points;
+    for (Index e = 0; e < current.space().num_elements(); ++e) s.levels = std::max(s.levels, current.space().level(e) + 1);
+    s.estimate = est.total;
+    if (r.errors) {
+      const double energy = std::sqrt(r.errors->h1 * r.errors->h1 + problem.reaction * r.errors->l2 * r.errors->l2);
+      s.energy_error = energy;
+      s.l2_error = r.errors->l2;
+      if (energy > 0) s.efficiency = est.total / energy;
+    }
+    const bool last = step >= options.steps || (options.max_dofs > 0 && r.dofs >= options.max_dofs);
+    if (on_step) on_step(s, current, r, est);
+    if (last) {
+      history.push_back(s);
+      break;
+    }
+    t = std::chrono::steady_clock::now();
+    const std::vector<Index> marked = mark(est.indicators, options.marking, options.theta);
+    s.mark_seconds = seconds_since(t);
+    if (marked.empty()) {
+      history.push_back(s);
+      break;  // the estimate is zero: nothing left to refine
+    }
+    t = std::chrono::steady_clock::now();
+    basis::BackendFacts facts;
+    basis::Refinement refined = backend.refine_marked(current, marked, options.admissibility, facts);
+    s.refine_seconds = seconds_since(t);
+    s.marked = facts.counts["marked"];
+    s.added = facts.counts["added"];
+    history.push_back(s);
+    current = refined.geometry;
+  }
+  return history;
+}
+
+}  // namespace iga::refine
