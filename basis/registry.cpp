@@ -49,6 +49,7 @@ int degree(const Backend& backend, const BackendOptions& options) {
 
 Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
                        BackendFacts& facts) {
+  if (net && !options.geometry.empty()) throw InputError("--geometry and --mesh exclude each other");
   if (net) return backend.from_net(*net, options, facts);
   if (!backend.default_geometry) {
     throw InputError("--basis " + backend.name + " needs --mesh (a control net)");

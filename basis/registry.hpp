@@ -24,6 +24,7 @@ struct BackendOptions {
   int degree = kUnset;        ///< polynomial degree per direction ("degree": bspline)
   int presubdivide = kUnset;  ///< Catmull–Clark steps of the net before building ("presubdivide": polyhedral)
   bool degree_raise = false;  ///< Bézier export: raise every patch to the element degree ("degree-raise")
+  std::string geometry;       ///< a built-in geometry instead of a net ("geometry": bspline quarter-annulus, l-shape)
   std::string net_name = "mesh";  ///< the net's file name, for messages
 };
 

@@ -19,6 +19,7 @@
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
 #include "quadrature/rule_provider.hpp"
+#include "refine/adaptive.hpp"
 #include "refine/refine_smooth.hpp"
 #include "refine/uniform.hpp"
 
@@ -27,7 +28,11 @@ namespace {
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
+  std::string geometry, mark = "doerfler";
   int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
+  int adaptive = -1, admissibility = 2;
+  long long max_dofs = 0;
+  double theta = 0.5;
   double reaction = 0.0;
   bool quiet = false, mean_zero = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
@@ -84,6 +89,7 @@ int run(const Options& o) {
   basis::BackendOptions bo;
   if (o.count("degree")) bo.degree = o.degree;
   if (o.count("presubdivide")) bo.presubdivide = o.presubdivide;
+  if (o.count("geometry")) bo.geometry = o.geometry;
   bo.net_name = o.mesh;
   const int degree = basis::degree(backend, bo);
   const int refine_steps = o.refine >= 0 ? o.refine : backend.default_refine;
@@ -142,7 +148,59 @@ int run(const Options& o) {
 
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
       std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
-  const fem::PoissonResult r = fem::solve_poisson(geometry, *rules, problem, solver);
+  // --adaptive: solve → estimate → mark → refine, one .vtu per step and a .pvd series; the report's top-level
+  // figures are the last step's.
+  fem::PoissonResult r;
+  std::optional<basis::Geometry> final_geometry;
+  nlohmann::json adaptive_json;
+  const bool write_vtu = !o.vtu.empty() && o.vtu != "none";
+  if (o.adaptive >= 0) {
+    refine::AdaptiveOptions ao;
+    ao.steps = o.adaptive;
+    ao.theta = o.theta;
+    ao.marking = refine::parse_marking(o.mark);
+    ao.max_dofs = o.max_dofs;
+    ao.admissibility = o.admissibility;
+    const std::string base = o.vtu.size() > 4 && o.vtu.substr(o.vtu.size() - 4) == ".vtu" ? o.vtu.substr(0, o.vtu.size() - 4) : o.vtu;
+    std::vector<io::SeriesEntry> series;
+    auto on_step = [&](const refine::AdaptiveStep& s, const basis::Geometry& g, const fem::PoissonResult& res, const fem::Estimate& est) {
+      log("step " + std::to_string(s.step) + ": " + std::to_string(s.dofs) + " dofs, " + std::to_string(s.levels) +
+          " levels, estimate " + std::to_string(s.estimate) +
+          (s.energy_error ? ", energy error " + std::to_string(*s.energy_error) : std::string()));
+      r = res;
+      final_geometry = g;
+      if (write_vtu) {
+        char name[32];
+        std::snprintf(name, sizeof name, "_step%03d.vtu", s.step);
+        const std::string file = base + name;
+        io::VtuOptions vo;
+        vo.samples = o.samples;
+        vo.exact = problem.exact;
+        io::write_vtu(file, g, res.u, vo, {{"indicator", est.indicators}});
+        const std::size_t slash = file.find_last_of('/');
+        series.push_back({static_cast<double>(s.step), slash == std::string::npos ? file : file.substr(slash + 1)});
+        io::write_pvd(base + ".pvd", series);
+      }
+    };
+    const std::vector<refine::AdaptiveStep> history = refine::adaptive_solve(geometry, *rules, problem, solver, ao, on_step);
+    adaptive_json = {{"steps", o.adaptive}, {"theta", o.theta}, {"marking", refine::to_string(ao.marking)},
+                     {"max_dofs", o.max_dofs}, {"admissibility", o.admissibility}};
+    if (write_vtu) adaptive_json["pvd"] = base + ".pvd";
+    for (const refine::AdaptiveStep& s : history) {
+      auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+      adaptive_json["history"].push_back(
+          {{"step", s.step}, {"dofs", s.dofs}, {"elements", s.elements}, {"levels", s.levels},
+           {"quadrature_points", s.quadrature_points}, {"estimate", s.estimate}, {"energy_error", opt(s.energy_error)},
+           {"l2_error", opt(s.l2_error)}, {"efficiency_index", opt(s.efficiency)}, {"marked", s.marked},
+           {"added_for_admissibility", s.added},
+           {"seconds", {{"setup", s.setup_seconds}, {"assembly", s.assembly_seconds}, {"solve", s.solve_seconds},
+                        {"errors", s.error_seconds}, {"estimate", s.estimate_seconds}, {"mark", s.mark_seconds},
+                        {"refine", s.refine_seconds}}}});
+    }
+  } else {
+    r = fem::solve_poisson(geometry, *rules, problem, solver);
+    final_geometry = geometry;
+  }
   auto fmt = [](double v) {
     std::ostringstream s;
     s << std::setprecision(4) << v;
@@ -153,11 +211,12 @@ int run(const Options& o) {
   nlohmann::json j;
   j["program"] = "iga-poisson";
   j["basis"] = o.basis;
-  j["mesh"] = o.mesh.empty() ? "default:quarter-annulus" : o.mesh;
+  j["mesh"] = o.mesh.empty() ? "default:" + (o.geometry.empty() ? std::string("quarter-annulus") : o.geometry) : o.mesh;
   j["dimension"] = geometry.dim();
   j["degree"] = degree;
   j["refine"] = refine_steps;
   j["nested_refinement"] = refined.nested;
+  if (o.adaptive >= 0) j["adaptive"] = adaptive_json;
   if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
   for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
@@ -191,13 +250,15 @@ int run(const Options& o) {
     j["h1_error_relative"] = r.errors->h1_exact > 0 ? nlohmann::json(r.errors->h1 / r.errors->h1_exact) : nlohmann::json(nullptr);
     log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
   }
-  if (!o.vtu.empty() && o.vtu != "none") {
+  if (write_vtu && o.adaptive < 0) {
     io::VtuOptions vo;
     vo.samples = o.samples;
     vo.exact = problem.exact;
     io::write_vtu(o.vtu, geometry, r.u, vo);
     j["vtu"] = o.vtu;
     log("wrote " + o.vtu);
+  } else if (write_vtu) {
+    log("wrote " + adaptive_json["pvd"].get<std::string>() + " and its " + std::to_string(adaptive_json["history"].size()) + " .vtu files");
   }
   j["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if (!o.json.empty() && o.json != "none") {
@@ -224,6 +285,12 @@ int main(int argc, char** argv) {
   app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(CLI::Range(1, 12))->capture_default_str();
   app.add_option("--refine-intervals", o.refine_intervals, "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
   app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for polyhedral, where each step is a Catmull–Clark step of the net)")->check(CLI::Range(0, 14));
+  app.add_option("--geometry", o.geometry, "bspline without --mesh: the built-in geometry, quarter-annulus (default) or l-shape ([0,2]^2 minus (1,2]^2, one patch with a C0 line from the reflex corner)");
+  app.add_option("--adaptive", o.adaptive, "adaptive refinement: STEPS rounds of solve, estimate (residual estimator), mark, refine locally (bspline: THB; the --refine steps come first); one .vtu per step plus a .pvd series")->check(CLI::Range(0, 200));
+  app.add_option("--theta", o.theta, "--adaptive: marking parameter in (0, 1]")->check(CLI::Range(1e-6, 1.0))->capture_default_str();
+  app.add_option("--mark", o.mark, "--adaptive: doerfler (bulk) or max")->check(CLI::IsMember({"doerfler", "max"}))->capture_default_str();
+  app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(CLI::NonNegativeNumber);
+  app.add_option("--admissibility", o.admissibility, "--adaptive: class m of admissible meshes (>= 2; 0 refines exactly the marked elements)")->check(CLI::IsMember({0, 2, 3, 4, 5, 6}))->capture_default_str();
   app.add_option("--presubdivide", o.presubdivide, "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes <= 8 admissible)")->check(CLI::Range(0, 6));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
@@ -244,7 +311,7 @@ int main(int argc, char** argv) {
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   CLI11_PARSE(app, argc, argv);
-  for (const char* option : {"degree", "presubdivide", "refine-intervals"}) {
+  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
   try {

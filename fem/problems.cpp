@@ -12,7 +12,7 @@ using V = Eigen::Vector3d;
 constexpr double kPi = std::numbers::pi;
 }  // namespace
 
-std::vector<std::string> manufactured_problem_names() { return {"sine", "harmonic", "linear", "poly"}; }
+std::vector<std::string> manufactured_problem_names() { return {"sine", "harmonic", "linear", "poly", "corner"}; }
 
 ManufacturedProblem manufactured_problem(const std::string& name, double c) {
   ManufacturedProblem p;
@@ -45,6 +45,39 @@ ManufacturedProblem manufactured_problem(const std::string& name, double c) {
                             });
     p.source = make_function([c](const V& x) {
       return -8 * x(1) + c * (x(0) * x(0) * x(1) + x(1) * x(1) * x(1) - x(0) * x(1));
+    });
+  } else if (name == "corner") {
+    // u = r^α sin(αφ), α = 2/3, in polar coordinates (r, θ) about (1, 1) with φ = θ − π/2 ∈ [0, 3π/2]: harmonic,
+    // zero on the two edges at the corner; ∇u = α r^(α−1) (sin(αφ − θ), cos(αφ − θ)).
+    p.description = "u = r^(2/3) sin(2 phi/3) about the reflex corner (1,1) of the L-shape [0,2]^2 minus (1,2]^2";
+    auto polar = [](const V& x, double& r, double& theta, double& phi) {
+      r = std::hypot(x(0) - 1, x(1) - 1);
+      theta = std::atan2(x(1) - 1, x(0) - 1);
+      phi = theta - kPi / 2;
+      if (phi < 0) phi += 2 * kPi;
+    };
+    constexpr double a = 2.0 / 3.0;
+    p.exact = make_function(
+        [polar](const V& x) {
+          double r, theta, phi;
+          polar(x, r, theta, phi);
+          return std::pow(r, a) * std::sin(a * phi);
+        },
+        [polar](const V& x) -> V {
+          double r, theta, phi;
+          polar(x, r, theta, phi);
+          if (r == 0) return {0.0, 0.0, 0.0};
+          const double g = a * std::pow(r, a - 1);
+          return {g * std::sin(a * phi - theta), g * std::cos(a * phi - theta), 0.0};
+        });
+    auto exact = p.exact;
+    p.source = make_function([c, exact](const V& x) {
+      if (c == 0) return 0.0;
+      Eigen::Matrix3Xd pt(3, 1);
+      pt.col(0) = x;
+      Eigen::VectorXd out;
+      exact->values(pt, out);
+      return c * out(0);
     });
   } else {
     std::string known;

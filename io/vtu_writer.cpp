@@ -3,6 +3,9 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLUtilities.h>
+#include <fstream>
 #include <vtkCellType.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
@@ -108,7 +111,7 @@ void on_vtk_error(vtkObject* /*caller*/, unsigned long /*event*/, void* client_d
 }  // namespace
 
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd& u,
-               const VtuOptions& options) {
+               const VtuOptions& options, const ElementData& element_data) {
   const basis::Space& space = geometry.space();
   if (u.size() != space.num_dofs()) {
     throw InputError("write_vtu: the solution has " + std::to_string(u.size()) + " coefficients, the space has " +
@@ -165,6 +168,21 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
   unsigned char* type_out = cell_types->GetPointer(0);
   vtkIdType* element_out = element_array->GetPointer(0);
   int* kind_out = kind_array->GetPointer(0);
+  vtkNew<vtkIntArray> level_array;
+  level_array->SetName("level");
+  level_array->SetNumberOfTuples(static_cast<vtkIdType>(total_cells));
+  int* level_out = level_array->GetPointer(0);
+  std::vector<vtkSmartPointer<vtkDoubleArray>> extra;
+  for (const auto& [name, values] : element_data) {
+    if (values.size() != num_elements) {
+      throw InputError("vtu: element data '" + name + "' has " + std::to_string(values.size()) + " values for " +
+                       std::to_string(num_elements) + " elements");
+    }
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name.c_str());
+    a->SetNumberOfTuples(static_cast<vtkIdType>(total_cells));
+    extra.push_back(a);
+  }
 
   basis::BasisValues bv;
   basis::GeometryValues gv;
@@ -217,6 +235,8 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
       type_out[cell] = p.vtk_type;
       element_out[cell] = static_cast<vtkIdType>(e);
       kind_out[cell] = basis::kind_code(kind);
+      level_out[cell] = space.level(e);
+      for (std::size_t k = 0; k < extra.size(); ++k) extra[k]->SetValue(cell, element_data[k].second(e));
       ++cell;
     }
     point_base += static_cast<vtkIdType>(q);
@@ -240,6 +260,8 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
   }
   grid->GetCellData()->AddArray(element_array);
   grid->GetCellData()->AddArray(kind_array);
+  grid->GetCellData()->AddArray(level_array);
+  for (const auto& a : extra) grid->GetCellData()->AddArray(a);
 
   // Errors are reported by the exception below; the observers also keep VTK from printing them (the writer
   // reports a file it cannot open, its executive the failed request that follows).
@@ -259,6 +281,33 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
   if (ok != 1 || vtk_error || writer->GetErrorCode() != vtkErrorCode::NoError) {
     throw InputError(path, 0, "cannot write file");
   }
+}
+
+void write_pvd(const std::string& path, const std::vector<SeriesEntry>& entries) {
+  // The collection format ParaView reads: VTKFile type="Collection" with one DataSet per step, built as a VTK
+  // XML element tree and written by vtkXMLUtilities.
+  vtkNew<vtkXMLDataElement> root;
+  root->SetName("VTKFile");
+  root->SetAttribute("type", "Collection");
+  root->SetAttribute("version", "0.1");
+  root->SetAttribute("byte_order", "LittleEndian");
+  vtkNew<vtkXMLDataElement> collection;
+  collection->SetName("Collection");
+  for (const SeriesEntry& entry : entries) {
+    vtkNew<vtkXMLDataElement> set;
+    set->SetName("DataSet");
+    set->SetDoubleAttribute("timestep", entry.time);
+    set->SetAttribute("group", "");
+    set->SetAttribute("part", "0");
+    set->SetAttribute("file", entry.file.c_str());
+    collection->AddNestedElement(set);
+  }
+  root->AddNestedElement(collection);
+  std::ofstream out(path);
+  if (!out) throw InputError(path, 0, "cannot write file");
+  vtkXMLUtilities::FlattenElement(root, out);
+  out << "\n";
+  if (!out) throw InputError(path, 0, "cannot write file");
 }
 
 }  // namespace iga::io

@@ -3,6 +3,8 @@
 #include <Eigen/Core>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "basis/geometry.hpp"
 #include "fem/function.hpp"
@@ -13,6 +15,19 @@ struct VtuOptions {
   int samples = 5;                             ///< points per direction on each element (>= 2)
   std::shared_ptr<const fem::Function> exact;  ///< optional exact solution
 };
+
+/// Extra cell data for write_vtu: named values, one per element (e.g. "indicator", an error estimator's η_K),
+/// written on every VTK cell of the element.
+using ElementData = std::vector<std::pair<std::string, Eigen::VectorXd>>;
+
+/// One step of a series for ParaView: a .vtu file and its time (the adaptive step).
+struct SeriesEntry {
+  double time = 0.0;
+  std::string file;  ///< as referenced from the .pvd (relative to its folder)
+};
+/// Writes a ParaView collection (.pvd) so ParaView plays the files as a time series. InputError(path, 0, ..) when
+/// the file cannot be written.
+void write_pvd(const std::string& path, const std::vector<SeriesEntry>& entries);
 
 /// Writes the solution u (coefficients of geometry.space()'s functions) as a binary VTK XML unstructured
 /// grid, with VTK's own writer.
@@ -25,11 +40,13 @@ struct VtuOptions {
 /// Points are the physical positions (3D, z = 0 on planar domains).
 /// Point data: "u", "grad_u" (3 components, the physical / surface gradient) and, when options.exact is
 /// set, "exact" and "error" (= u - exact). Cell data: "element" (vtkIdTypeArray, the element index) and
-/// "element_kind" (vtkIntArray, basis::kind_code of the element's kind).
+/// "element_kind" (vtkIntArray, basis::kind_code of the element's kind), "level" (vtkIntArray, Space::level: the
+/// refinement level in hierarchical spaces, 0 otherwise) and each entry of element_data (InputError when its size
+/// is not the number of elements).
 ///
 /// Throws InputError when u.size() != num_dofs or samples < 2, and InputError(path, 0, "cannot write file")
 /// when VTK's writer fails.
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd& u,
-               const VtuOptions& options = {});
+               const VtuOptions& options = {}, const ElementData& element_data = {});
 
 }  // namespace iga::io

@@ -130,14 +130,17 @@ Backend bspline_backend() {
   Backend b;
   b.name = "bspline";
   b.description = "tensor-product B-splines on one patch (a structured quad-grid net, or the quarter annulus)";
-  b.options = {"degree", "refine-intervals"};
+  b.options = {"degree", "refine-intervals", "geometry"};
   b.default_degree = 3;
   b.default_refine = 4;
   b.from_net = [](const mesh::PolyMesh& net, const BackendOptions& o, BackendFacts&) {
     return bspline::geometry_from_quad_grid(net, o.degree == BackendOptions::kUnset ? 3 : o.degree, o.net_name);
   };
   b.default_geometry = [](const BackendOptions& o) {
-    return bspline::make_quarter_annulus(o.degree == BackendOptions::kUnset ? 3 : o.degree);
+    const int p = o.degree == BackendOptions::kUnset ? 3 : o.degree;
+    if (o.geometry.empty() || o.geometry == "quarter-annulus") return bspline::make_quarter_annulus(p);
+    if (o.geometry == "l-shape") return bspline::make_l_shape(p);
+    throw InputError("--geometry: unknown built-in geometry '" + o.geometry + "' (quarter-annulus, l-shape)");
   };
   b.refine = refine_midpoints;
   b.refine_marked = refine_thb;

@@ -64,6 +64,30 @@ Geometry make_rectangle(int degree, double x0, double x1, double y0, double y1) 
   return make_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp);
 }
 
+Geometry make_l_shape(int degree) {
+  if (degree < 1) throw InputError("L-shape: degree must be >= 1");
+  const int p = degree;
+  // Corners of the two bilinear pieces: piece[k][a + 2b] = P(u = a, v = b) of piece k.
+  const Eigen::Vector2d piece[2][4] = {{{2, 1}, {1, 1}, {2, 0}, {0, 0}}, {{1, 1}, {1, 2}, {0, 0}, {0, 2}}};
+  std::vector<double> u(static_cast<std::size_t>(p + 1), 0.0), v(static_cast<std::size_t>(p + 1), 0.0);
+  u.insert(u.end(), static_cast<std::size_t>(p), 0.5);
+  u.insert(u.end(), static_cast<std::size_t>(p + 1), 1.0);
+  v.insert(v.end(), static_cast<std::size_t>(p + 1), 1.0);
+  const int nu = 2 * p + 1, nv = p + 1;
+  Eigen::MatrixXd cp(nu * nv, 2);
+  // With a knot of multiplicity p the B-spline coefficients are the Bézier points of each piece; a bilinear
+  // piece raised to degree p has the bilinear map at (a/p, b/p) as Bézier points.
+  for (int j = 0; j < nv; ++j) {
+    for (int i = 0; i < nu; ++i) {
+      const int k = i < p ? 0 : 1;
+      const double s = static_cast<double>(i - k * p) / p, t = static_cast<double>(j) / p;
+      const Eigen::Vector2d* c = piece[k];
+      cp.row(i + nu * j) = ((1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + (1 - s) * t * c[2] + s * t * c[3]).transpose();
+    }
+  }
+  return make_patch(KnotVector(p, u), KnotVector(p, v), cp);
+}
+
 Geometry geometry_from_quad_grid(const mesh::PolyMesh& m, int degree, const std::string& name) {
   auto fail = [&](const std::string& why) -> void {
     throw InputError(name, 0, "not a structured quad grid for a B-spline patch: " + why);

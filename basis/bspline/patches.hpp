@@ -20,6 +20,14 @@ Geometry make_quarter_annulus(int degree, double r_inner = 1.0, double r_outer =
 /// The rectangle [x0,x1]×[y0,y1] (affine map) as a single Bézier patch of degree (p, p), p >= 1.
 Geometry make_rectangle(int degree, double x0 = 0.0, double x1 = 1.0, double y0 = 0.0, double y1 = 1.0);
 
+/// The L-shaped domain [0,2]² minus (1,2]² (area 3, reflex corner (1,1): the domain of data/meshes/l_shape.obj)
+/// as one patch of degree (p, p), p >= 1, with a knot of multiplicity p at u = 1/2: two bilinear pieces, exactly
+/// represented at every degree, meeting C0 along the segment from the reflex corner (1,1) to (0,0).
+/// u ∈ [0, 1/2] maps to the quadrilateral (2,1), (1,1), (0,0), (2,0); u ∈ [1/2, 1] to (1,1), (1,2), (0,2), (0,0).
+/// Boundary parts: v0 the inner polyline (2,1)–(1,1)–(1,2) with the reflex corner, u0 the segment
+/// (2,1)–(2,0), u1 (1,2)–(0,2), v1 the outer polyline (2,0)–(0,0)–(0,2).
+Geometry make_l_shape(int degree);
+
 /// A B-spline geometry whose control net is a structured quad grid (a topological rectangle of
 /// nu × nv vertices): degree p in both directions on open uniform knot vectors with nu - p and nv - p
 /// intervals. u runs along the boundary from a corner with the mesh on its left, v across it.

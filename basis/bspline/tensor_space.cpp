@@ -90,6 +90,26 @@ void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives
   evaluate_bezier_tensor(cu_[static_cast<std::size_t>(ex)], cv_[static_cast<std::size_t>(ey)], pts, derivatives, out);
 }
 
+std::vector<InteriorEdge> TensorSpace::interior_edges() const {
+  auto multiplicity = [](const KnotVector& kv, Index span) {
+    int m = 0;
+    for (Index i = span; i >= 0 && kv[i] == kv[span]; --i) ++m;
+    return m;
+  };
+  std::vector<InteriorEdge> edges;
+  for (Index ey = 0; ey < ney_; ++ey) {
+    for (Index ex = 0; ex + 1 < nex_; ++ex) {
+      const int c = u_.degree() - multiplicity(u_, u_.interval_spans()[static_cast<std::size_t>(ex + 1)]);
+      edges.push_back({{ex + nex_ * ey, ex + 1 + nex_ * ey}, {1, 3}, {0.0, 1.0}, {1.0, 0.0}, c});
+    }
+  }
+  for (Index ey = 0; ey + 1 < ney_; ++ey) {
+    const int c = v_.degree() - multiplicity(v_, v_.interval_spans()[static_cast<std::size_t>(ey + 1)]);
+    for (Index ex = 0; ex < nex_; ++ex) edges.push_back({{ex + nex_ * ey, ex + nex_ * (ey + 1)}, {2, 0}, {0.0, 1.0}, {1.0, 0.0}, c});
+  }
+  return edges;
+}
+
 std::vector<BoundaryEdge> TensorSpace::boundary_edges() const {
   std::vector<BoundaryEdge> edges;
   for (Index ex = 0; ex < nex_; ++ex) edges.push_back({ex, 0, 0});

@@ -26,6 +26,9 @@ class TensorSpace final : public Space {
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override;
   std::vector<std::string> boundary_part_names() const override { return {"v0", "u1", "v1", "u0"}; }
+  /// Vertical edges (between ex and ex + 1) row by row, then horizontal ones; continuity = degree − multiplicity
+  /// of the knot line.
+  std::vector<InteriorEdge> interior_edges() const override;
 
   const KnotVector& knots_u() const { return u_; }
   const KnotVector& knots_v() const { return v_; }
