@@ -94,10 +94,10 @@ Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& fac
 }
 
 Refinement refine_marked(const Geometry& geometry, std::span<const Index> marked, int admissibility,
-                         BackendFacts& facts) {
+                         BackendFacts& facts, bool with_prolongation) {
   const Backend& b = backend_of(geometry.space());
   if (!b.refine_marked) throw UnsupportedError("local refinement of a '" + b.name + "' space is not implemented");
-  return b.refine_marked(geometry, marked, admissibility, facts);
+  return b.refine_marked(geometry, marked, admissibility, facts, with_prolongation);
 }
 
 }  // namespace iga::basis

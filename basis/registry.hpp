@@ -78,7 +78,11 @@ struct Backend {
   /// Local refinement: the marked elements of the geometry's space are split (plus what keeps the mesh admissible
   /// of class `admissibility`, 0 = none), nested, with the prolongation; the map is unchanged. Empty when the
   /// backend has no local refinement. Writes facts "marked", "added" (cells refined for admissibility), "levels".
-  std::function<Refinement(const Geometry&, std::span<const Index> marked, int admissibility, BackendFacts&)> refine_marked;
+  /// With with_prolongation = false the prolongation is left empty (the control points are still prolongated):
+  /// for loops that only need the refined geometry.
+  std::function<Refinement(const Geometry&, std::span<const Index> marked, int admissibility, BackendFacts&,
+                           bool with_prolongation)>
+      refine_marked;
   /// The default quadrature specification for a degree (quadrature::make_rule_provider).
   std::function<std::string(int degree)> default_quadrature;
   /// Bézier patches of the geometry (elements that are not polynomial are counted in facts "bv_skipped").
@@ -113,7 +117,8 @@ Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& fac
 
 /// Local refinement of the marked elements through the backend of the geometry's space (UnsupportedError naming
 /// the backend when it has none).
-Refinement refine_marked(const Geometry& geometry, std::span<const Index> marked, int admissibility, BackendFacts& facts);
+Refinement refine_marked(const Geometry& geometry, std::span<const Index> marked, int admissibility, BackendFacts& facts,
+                         bool with_prolongation = true);
 
 /// For backends whose dofs are some of a net's vertices and which refine by rebuilding from a refined net:
 /// the net with the control point of dof d at vertex vertex_of_dof(d) (planar geometries get z = 0; vertices

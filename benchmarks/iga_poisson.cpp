@@ -182,9 +182,11 @@ int run(const Options& o) {
         io::write_pvd(base + ".pvd", series);
       }
     };
-    const std::vector<refine::AdaptiveStep> history = refine::adaptive_solve(geometry, *rules, problem, solver, ao, on_step);
+    const refine::AdaptiveRun run = refine::adaptive_solve(geometry, *rules, problem, solver, ao, on_step);
+    const std::vector<refine::AdaptiveStep>& history = run.history;
+    if (run.stopped != "steps") log("adaptive loop stopped after step " + std::to_string(history.back().step) + ": " + run.stopped);
     adaptive_json = {{"steps", o.adaptive}, {"theta", o.theta}, {"marking", refine::to_string(ao.marking)},
-                     {"max_dofs", o.max_dofs}, {"admissibility", o.admissibility}};
+                     {"max_dofs", o.max_dofs}, {"admissibility", o.admissibility}, {"stopped", run.stopped}};
     if (write_vtu) adaptive_json["pvd"] = base + ".pvd";
     for (const refine::AdaptiveStep& s : history) {
       auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };

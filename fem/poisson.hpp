@@ -49,7 +49,8 @@ struct PoissonResult {
 
 /// The pipeline in steps (deal.II step-6's setup_system / assemble_system / solve, DESIGN item 5), for loops
 /// that need the pieces: setup() → assemble() → solve() → errors(), each once and in this order (a step
-/// called out of order runs the missing ones first). The solver keeps references to geometry, rules and problem.
+/// called out of order runs the missing ones first). The solver keeps references to geometry and rules (they must
+/// outlive it) and a copy of the problem.
 class PoissonSolver {
  public:
   PoissonSolver(const basis::Geometry& geometry, const quadrature::RuleProvider& rules, const PoissonProblem& problem,
@@ -79,7 +80,7 @@ class PoissonSolver {
   struct Systems;
   const basis::Geometry& geometry_;
   const quadrature::RuleProvider& rules_;
-  const PoissonProblem& problem_;
+  PoissonProblem problem_;  // a copy (shared data): a temporary problem is safe
   SolverOptions solver_;
   PoissonResult r_;
   std::vector<basis::BoundaryEdge> neumann_edges_, dirichlet_edges_;

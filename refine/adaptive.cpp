@@ -13,7 +13,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-std::vector<AdaptiveStep> adaptive_solve(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
                                          const fem::PoissonProblem& problem, const fem::SolverOptions& solver,
                                          const AdaptiveOptions& options, const StepCallback& on_step) {
   if (options.steps < 0) throw InputError("adaptive: steps must be >= 0");
@@ -21,7 +21,8 @@ std::vector<AdaptiveStep> adaptive_solve(const basis::Geometry& geometry, const 
   if (!backend.refine_marked) {
     throw UnsupportedError("adaptive refinement: the '" + backend.name + "' basis has no local refinement");
   }
-  std::vector<AdaptiveStep> history;
+  AdaptiveRun run;
+  std::vector<AdaptiveStep>& history = run.history;
   basis::Geometry current = geometry;
   for (int step = 0;; ++step) {
     AdaptiveStep s;
@@ -54,6 +55,7 @@ std::vector<AdaptiveStep> adaptive_solve(const basis::Geometry& geometry, const 
     const bool last = step >= options.steps || (options.max_dofs > 0 && r.dofs >= options.max_dofs);
     if (on_step) on_step(s, current, r, est);
     if (last) {
+      run.stopped = step >= options.steps ? "steps" : "max_dofs";
       history.push_back(s);
       break;
     }
@@ -61,19 +63,27 @@ std::vector<AdaptiveStep> adaptive_solve(const basis::Geometry& geometry, const 
     const std::vector<Index> marked = mark(est.indicators, options.marking, options.theta);
     s.mark_seconds = seconds_since(t);
     if (marked.empty()) {
+      run.stopped = "estimate is zero";
       history.push_back(s);
-      break;  // the estimate is zero: nothing left to refine
+      break;  // nothing left to refine
     }
     t = std::chrono::steady_clock::now();
     basis::BackendFacts facts;
-    basis::Refinement refined = backend.refine_marked(current, marked, options.admissibility, facts);
+    std::optional<basis::Refinement> refined;
+    try {
+      refined = backend.refine_marked(current, marked, options.admissibility, facts, false);
+    } catch (const UnsupportedError& e) {
+      run.stopped = std::string("deepest level: ") + e.what();
+      history.push_back(s);
+      break;
+    }
     s.refine_seconds = seconds_since(t);
     s.marked = facts.counts["marked"];
     s.added = facts.counts["added"];
     history.push_back(s);
-    current = refined.geometry;
+    current = refined->geometry;
   }
-  return history;
+  return run;
 }
 
 }  // namespace iga::refine

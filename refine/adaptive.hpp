@@ -3,6 +3,7 @@
 // registry entry refines locally (basis::Backend::refine_marked: THB for bspline).
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "basis/registry.hpp"
@@ -38,9 +39,16 @@ struct AdaptiveStep {
 using StepCallback = std::function<void(const AdaptiveStep&, const basis::Geometry&, const fem::PoissonResult&,
                                         const fem::Estimate&)>;
 
+struct AdaptiveRun {
+  std::vector<AdaptiveStep> history;
+  /// Why the loop ended: "steps", "max_dofs", "estimate is zero", or "deepest level: ..." when a marked element
+  /// could not be refined because the hierarchy has no finer level (the last solve is kept).
+  std::string stopped;
+};
+
 /// Runs the loop from `geometry`. The problem, rules and solver options are the same at every step.
 /// UnsupportedError (before any solve) when the geometry's backend has no local refinement.
-std::vector<AdaptiveStep> adaptive_solve(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
                                          const fem::PoissonProblem& problem, const fem::SolverOptions& solver,
                                          const AdaptiveOptions& options, const StepCallback& on_step = {});
 

@@ -26,27 +26,35 @@ std::shared_ptr<const HierarchicalSpace> thb_of(const Geometry& g, Eigen::Sparse
   auto h = thb::coarse_thb_space(t->knots_u(), t->knots_v());
   to_thb->resize(h->num_dofs(), t->num_dofs());
   std::vector<Eigen::Triplet<double>> entries;
-  for (Index d = 0; d < h->num_dofs(); ++d) entries.emplace_back(d, h->dof_function(d), 1.0);
+  for (Index d = 0; d < h->num_dofs(); ++d) entries.emplace_back(d, static_cast<Index>(h->dof_function(d)), 1.0);
   to_thb->setFromTriplets(entries.begin(), entries.end());
   return h;
 }
 
 // THB refinement of the marked elements (a patch becomes level 0 first); the control points are prolongated.
-Refinement refine_thb(const Geometry& geometry, std::span<const Index> marked, int admissibility, BackendFacts& facts) {
+Refinement refine_thb(const Geometry& geometry, std::span<const Index> marked, int admissibility, BackendFacts& facts,
+                      bool with_prolongation) {
   Eigen::SparseMatrix<double> to_thb;
   const auto coarse = thb_of(geometry, &to_thb);
   const hierarchical::LocalRefinement r = marked.size() == static_cast<std::size_t>(coarse->num_elements()) && admissibility == 0
                                               ? hierarchical::refine_all(*coarse)
                                               : hierarchical::refine_marked(*coarse, marked, admissibility);
-  Eigen::SparseMatrix<double> p = r.space->prolongation_from(*coarse);
-  if (to_thb.size() > 0) {
-    Eigen::SparseMatrix<double> composed = p * to_thb;
-    p.swap(composed);
-  }
-  Eigen::MatrixXd cp = p * geometry.control_points();
   facts.counts["marked"] = r.marked;
   facts.counts["added"] = r.added;
   facts.counts["levels"] = r.space->num_levels();
+  const Eigen::MatrixXd coarse_cp = to_thb.size() > 0 ? Eigen::MatrixXd(to_thb * geometry.control_points()) : geometry.control_points();
+  Eigen::SparseMatrix<double> p;
+  Eigen::MatrixXd cp;
+  if (with_prolongation) {
+    p = r.space->prolongation_from(*coarse);
+    cp = p * coarse_cp;
+    if (to_thb.size() > 0) {
+      Eigen::SparseMatrix<double> composed = p * to_thb;
+      p.swap(composed);
+    }
+  } else {
+    cp = r.space->coefficients_from(*coarse, coarse_cp);
+  }
   return {Geometry(r.space, std::move(cp)), std::move(p), true};
 }
 
@@ -65,7 +73,7 @@ Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts& f
     for (int s = 0; s < steps; ++s) {
       std::vector<Index> all(static_cast<std::size_t>(r.geometry.space().num_elements()));
       for (std::size_t e = 0; e < all.size(); ++e) all[e] = static_cast<Index>(e);
-      Refinement next = refine_thb(r.geometry, all, 0, facts);
+      Refinement next = refine_thb(r.geometry, all, 0, facts, true);
       Eigen::SparseMatrix<double> composed = next.prolongation * r.prolongation;
       r = {next.geometry, std::move(composed), true};
     }

@@ -36,6 +36,14 @@ void drop_zero_rows(std::vector<Index>& ids, Eigen::MatrixXd& m) {
 
 }  // namespace
 
+std::string to_string(Key k) {
+  if (k == 0) return "0";
+  const bool negative = k < 0;
+  std::string digits;
+  for (Key v = negative ? -k : k; v > 0; v /= 10) digits.insert(digits.begin(), static_cast<char>('0' + static_cast<int>(v % 10)));
+  return negative ? "-" + digits : digits;
+}
+
 HierarchicalSpace::HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hierarchy, RefinedCells refined)
     : hierarchy_(std::move(hierarchy)), refined_(std::move(refined)) {
   if (!hierarchy_) throw InputError("hierarchical space: no level hierarchy given");
@@ -46,9 +54,9 @@ HierarchicalSpace::HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hiera
                            hierarchy_->name() + "' hierarchy can index");
   }
   for (std::size_t l = 0; l < refined_.size(); ++l) {
-    for (Index c : refined_[l]) {
+    for (Key c : refined_[l]) {
       if (!exists(static_cast<int>(l), c)) {
-        throw InputError("hierarchical space: refined cell " + std::to_string(c) + " of level " + std::to_string(l) +
+        throw InputError("hierarchical space: refined cell " + to_string(c) + " of level " + std::to_string(l) +
                          " lies outside the refined region of level " + std::to_string(l));
       }
     }
@@ -56,25 +64,25 @@ HierarchicalSpace::HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hiera
   build();
 }
 
-bool HierarchicalSpace::exists(int level, Index cell) const {
+bool HierarchicalSpace::exists(int level, Key cell) const {
   if (level == 0) return cell >= 0 && cell < hierarchy_->num_root_cells();
   int slot = 0;
   return is_refined(level - 1, hierarchy_->parent(level, cell, slot));
 }
 
-bool HierarchicalSpace::is_refined(int level, Index cell) const {
+bool HierarchicalSpace::is_refined(int level, Key cell) const {
   return level >= 0 && level < static_cast<int>(refined_.size()) &&
          refined_[static_cast<std::size_t>(level)].count(cell) > 0;
 }
 
-Index HierarchicalSpace::element_of(int level, Index cell) const {
+Index HierarchicalSpace::element_of(int level, Key cell) const {
   if (level < 0 || level >= static_cast<int>(leaf_index_.size())) return -1;
   const auto& map = leaf_index_[static_cast<std::size_t>(level)];
   const auto it = map.find(cell);
   return it == map.end() ? -1 : it->second;
 }
 
-Index HierarchicalSpace::leaf_containing(int level, Index cell) const {
+Index HierarchicalSpace::leaf_containing(int level, Key cell) const {
   if (is_refined(level, cell)) return -1;
   int slot = 0;
   while (level > 0 && !exists(level, cell)) {
@@ -97,14 +105,14 @@ std::span<const Index> HierarchicalSpace::dofs(Index e) const {
 void HierarchicalSpace::build() {
   const LevelHierarchy& h = *hierarchy_;
   const int nf = h.max_local_functions();
-  std::vector<std::unordered_map<Index, FunctionState>> state(refined_.size() + 2);
-  std::vector<Index> scratch;
-  auto function_state = [&](int level, Index f) -> FunctionState& {
+  std::vector<std::unordered_map<Key, FunctionState, KeyHash>> state(refined_.size() + 2);
+  std::vector<Key> scratch;
+  auto function_state = [&](int level, Key f) -> FunctionState& {
     FunctionState& s = state[static_cast<std::size_t>(level)][f];
     if (s.inside < 0) {
       h.support(level, f, scratch);
       bool inside = true, next = true;
-      for (Index c : scratch) {
+      for (Key c : scratch) {
         if (inside && !exists(level, c)) inside = false;
         if (next && !is_refined(level, c)) next = false;
       }
@@ -114,13 +122,13 @@ void HierarchicalSpace::build() {
     return s;
   };
   leaf_index_.assign(refined_.size() + 1, {});
-  std::vector<Index> fbuf(static_cast<std::size_t>(nf)), child_buf(static_cast<std::size_t>(nf));
+  std::vector<Key> fbuf(static_cast<std::size_t>(nf)), child_buf(static_cast<std::size_t>(nf));
   Eigen::MatrixXd k;
   // Depth-first over the forest. At a cell of level l, `rows` are the dofs of coarser levels that do not vanish
   // there and m their coefficients in the level's local functions; the level's active functions join as unit
   // rows. Going to a child: m K, then truncation (columns of the child level's functions with supp ⊆ Ω^{l+1}
   // are zeroed).
-  auto visit = [&](auto&& self, int level, Index cell, std::vector<Index> rows, Eigen::MatrixXd m) -> void {
+  auto visit = [&](auto&& self, int level, Key cell, std::vector<Index> rows, Eigen::MatrixXd m) -> void {
     const int nloc = h.local_functions(level, cell, fbuf.data());
     const Index inherited = static_cast<Index>(rows.size());
     for (int j = 0; j < nloc; ++j) {
@@ -175,7 +183,7 @@ void HierarchicalSpace::build() {
       return;
     }
     for (int slot = 0; slot < 4; ++slot) {
-      const Index child = h.child(level, cell, slot);
+      const Key child = h.child(level, cell, slot);
       h.refinement(level, cell, slot, k);
       Eigen::MatrixXd mc = m * k;
       const int nc = h.local_functions(level + 1, child, child_buf.data());
@@ -187,7 +195,7 @@ void HierarchicalSpace::build() {
       self(self, level + 1, child, std::move(rc), std::move(mc));
     }
   };
-  for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, c, {}, Eigen::MatrixXd());
+  for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, Key{c}, {}, Eigen::MatrixXd());
   for (std::size_t d = 0; d < dof_home_.size(); ++d) {
     if (dof_home_[d] < 0) throw NumericalError("hierarchical space: dof " + std::to_string(d) + " has no leaf of its level");
   }
@@ -243,7 +251,7 @@ std::vector<InteriorEdge> HierarchicalSpace::interior_edges() const {
     for (int side = 0; side < 4; ++side) {
       if (h.boundary_part(el.level, el.cell, side) >= 0) continue;
       int their = 0;
-      const Index n = h.neighbour(el.level, el.cell, side, their);
+      const Key n = h.neighbour(el.level, el.cell, side, their);
       InteriorEdge edge;
       edge.element[0] = e;
       edge.side[0] = side;
@@ -258,7 +266,7 @@ std::vector<InteriorEdge> HierarchicalSpace::interior_edges() const {
       // A coarser leaf: map the ends of the shared side (s = 0 is the neighbour's side parameter 1) up to it.
       Eigen::Vector2d p0 = side_point(Shape::Quad, their, 1.0), p1 = side_point(Shape::Quad, their, 0.0);
       int level = el.level;
-      Index cell = n;
+      Key cell = n;
       while (!exists(level, cell)) {
         int slot = 0;
         cell = h.parent(level, cell, slot);
@@ -290,11 +298,11 @@ Eigen::MatrixXd HierarchicalSpace::from_level0(const Eigen::MatrixXd& c0, Index 
   }
   const LevelHierarchy& h = *hierarchy_;
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(num_dofs(), c0.cols());
-  std::vector<Index> fbuf(static_cast<std::size_t>(h.max_local_functions()));
+  std::vector<Key> fbuf(static_cast<std::size_t>(h.max_local_functions()));
   Eigen::MatrixXd k;
   // The spline's local coefficients on each cell (level-local functions × columns), refined down the forest;
   // at a leaf, the coefficient of each dof at home there is its local coefficient (the dual functional).
-  auto visit = [&](auto&& self, int level, Index cell, const Eigen::MatrixXd& v) -> void {
+  auto visit = [&](auto&& self, int level, Key cell, const Eigen::MatrixXd& v) -> void {
     const Index e = element_of(level, cell);
     if (e >= 0) {
       const Element& el = elements_[static_cast<std::size_t>(e)];
@@ -310,10 +318,10 @@ Eigen::MatrixXd HierarchicalSpace::from_level0(const Eigen::MatrixXd& c0, Index 
     }
   };
   for (Index c = 0; c < h.num_root_cells(); ++c) {
-    const int n = h.local_functions(0, c, fbuf.data());
+    const int n = h.local_functions(0, Key{c}, fbuf.data());
     Eigen::MatrixXd v(n, c0.cols());
-    for (int j = 0; j < n; ++j) v.row(j) = c0.row(fbuf[static_cast<std::size_t>(j)]);
-    visit(visit, 0, c, v);
+    for (int j = 0; j < n; ++j) v.row(j) = c0.row(static_cast<Index>(fbuf[static_cast<std::size_t>(j)]));
+    visit(visit, 0, Key{c}, v);
   }
   return out;
 }
@@ -324,7 +332,7 @@ Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const Hierarchi
   Eigen::MatrixXd k;
   // w: the coarse functions that do not vanish on the cell (ids) in the cell level's local functions, known
   // from the coarse leaf down.
-  auto visit = [&](auto&& self, int level, Index cell, std::span<const Index> ids, const Eigen::MatrixXd& w) -> void {
+  auto visit = [&](auto&& self, int level, Key cell, std::span<const Index> ids, const Eigen::MatrixXd& w) -> void {
     std::span<const Index> rows = ids;
     Eigen::MatrixXd here;
     const Eigen::MatrixXd* cur = &w;
@@ -346,7 +354,7 @@ Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const Hierarchi
     if (e >= 0) {
       if (rows.empty()) {
         throw InputError("hierarchical prolongation: the spaces are not nested (the coarse space refines cell " +
-                         std::to_string(cell) + " of level " + std::to_string(level) + ", the fine one does not)");
+                         to_string(cell) + " of level " + std::to_string(level) + ", the fine one does not)");
       }
       const Element& el = elements_[static_cast<std::size_t>(e)];
       for (Index i = el.dof_begin; i < el.dof_end; ++i) {
@@ -369,10 +377,58 @@ Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const Hierarchi
       self(self, level + 1, h.child(level, cell, slot), rows, next);
     }
   };
-  for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, c, {}, Eigen::MatrixXd());
+  for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, Key{c}, {}, Eigen::MatrixXd());
   Eigen::SparseMatrix<double> p(num_dofs(), coarse.num_dofs());
   p.setFromTriplets(entries.begin(), entries.end());
   return p;
+}
+
+Eigen::MatrixXd HierarchicalSpace::coefficients_from(const HierarchicalSpace& coarse, const Eigen::MatrixXd& c) const {
+  if (c.rows() != coarse.num_dofs()) throw InputError("hierarchical coefficients: size mismatch");
+  const LevelHierarchy& h = *hierarchy_;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(num_dofs(), c.cols());
+  Eigen::MatrixXd k;
+  // v: the coarse spline's local coefficients (level-local functions × columns), from the coarse leaf down.
+  auto visit = [&](auto&& self, int level, Key cell, const Eigen::MatrixXd* v) -> void {
+    Eigen::MatrixXd here;
+    if (!v) {
+      const Index ce = coarse.element_of(level, cell);
+      if (ce >= 0) {
+        const Element& cel = coarse.elements_[static_cast<std::size_t>(ce)];
+        const auto rows = coarse.dofs(ce);
+        Eigen::MatrixXd local(static_cast<Index>(rows.size()), c.cols());
+        for (std::size_t r = 0; r < rows.size(); ++r) local.row(static_cast<Index>(r)) = c.row(rows[r]);
+        if (cel.coeff_begin < 0) {
+          here = local;
+        } else {
+          here = Eigen::Map<const Eigen::MatrixXd>(coarse.coeffs_.data() + cel.coeff_begin, cel.dof_end - cel.dof_begin,
+                                                   cel.num_local).transpose() * local;
+        }
+        v = &here;
+      }
+    }
+    const Index e = element_of(level, cell);
+    if (e >= 0) {
+      if (!v) throw InputError("hierarchical coefficients: the spaces are not nested");
+      const Element& el = elements_[static_cast<std::size_t>(e)];
+      for (Index i = el.dof_begin; i < el.dof_end; ++i) {
+        const Index d = dofs_[static_cast<std::size_t>(i)];
+        if (dof_home_[static_cast<std::size_t>(d)] == e) out.row(d) = v->row(dof_home_local_[static_cast<std::size_t>(d)]);
+      }
+      return;
+    }
+    for (int slot = 0; slot < 4; ++slot) {
+      if (v) {
+        h.refinement(level, cell, slot, k);
+        const Eigen::MatrixXd next = k.transpose() * *v;
+        self(self, level + 1, h.child(level, cell, slot), &next);
+      } else {
+        self(self, level + 1, h.child(level, cell, slot), nullptr);
+      }
+    }
+  };
+  for (Index r = 0; r < h.num_root_cells(); ++r) visit(visit, 0, Key{r}, nullptr);
+  return out;
 }
 
 }  // namespace iga::basis::hierarchical

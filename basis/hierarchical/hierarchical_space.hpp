@@ -27,7 +27,7 @@
 namespace iga::basis::hierarchical {
 
 /// The refined cells of each level (level l: cells of level l whose four children exist).
-using RefinedCells = std::vector<std::unordered_set<Index>>;
+using RefinedCells = std::vector<std::unordered_set<Key, KeyHash>>;
 
 class HierarchicalSpace final : public Space {
  public:
@@ -50,20 +50,20 @@ class HierarchicalSpace final : public Space {
   const std::shared_ptr<const LevelHierarchy>& hierarchy_ptr() const { return hierarchy_; }
   const RefinedCells& refined() const { return refined_; }
   /// Cell (of its level) of element e.
-  Index cell(Index e) const { return elements_[static_cast<std::size_t>(e)].cell; }
+  Key cell(Index e) const { return elements_[static_cast<std::size_t>(e)].cell; }
   /// Levels with elements: 1 + the deepest leaf level.
   int num_levels() const { return num_levels_; }
   /// Level of dof d, and the index of its function among its level's functions.
   int dof_level(Index d) const { return dof_level_[static_cast<std::size_t>(d)]; }
-  Index dof_function(Index d) const { return dof_function_[static_cast<std::size_t>(d)]; }
+  Key dof_function(Index d) const { return dof_function_[static_cast<std::size_t>(d)]; }
   /// The element that is cell `cell` of level `level`, or -1 when that cell is no leaf.
-  Index element_of(int level, Index cell) const;
+  Index element_of(int level, Key cell) const;
   /// Whether cell `cell` of level `level` exists (lies in Ω^level) / is refined.
-  bool exists(int level, Index cell) const;
-  bool is_refined(int level, Index cell) const;
+  bool exists(int level, Key cell) const;
+  bool is_refined(int level, Key cell) const;
   /// The leaf containing cell `cell` of level `level` (the cell itself or an ancestor); -1 when the cell is
   /// refined.
-  Index leaf_containing(int level, Index cell) const;
+  Index leaf_containing(int level, Key cell) const;
 
   /// Coefficients (num_dofs × columns) in this space of the level-0 spline with coefficients c0 (one row per
   /// level-0 function, ordered by level-0 function index). Exact: the spline lies in the space.
@@ -71,11 +71,13 @@ class HierarchicalSpace final : public Space {
   /// Prolongation from a coarser hierarchical space on the same hierarchy (every cell it refines, this one
   /// refines too): fine coefficients = P × coarse coefficients. InputError when the spaces are not nested.
   Eigen::SparseMatrix<double> prolongation_from(const HierarchicalSpace& coarse) const;
+  /// prolongation_from(coarse) × c without forming the matrix (num_dofs × c.cols()): for control points.
+  Eigen::MatrixXd coefficients_from(const HierarchicalSpace& coarse, const Eigen::MatrixXd& c) const;
 
  private:
   struct Element {
     int level = 0;
-    Index cell = 0;
+    Key cell = 0;
     Index dof_begin = 0, dof_end = 0;  // into dofs_
     Index coeff_begin = -1;            // into coeffs_: (dofs × local functions) column-major; -1: identity
     int num_local = 0;                 // level-local functions on the cell
@@ -88,10 +90,10 @@ class HierarchicalSpace final : public Space {
   std::vector<Index> dofs_;
   std::vector<double> coeffs_;
   std::vector<int> dof_level_;
-  std::vector<Index> dof_function_;
+  std::vector<Key> dof_function_;
   std::vector<Index> dof_home_;   // element
   std::vector<int> dof_home_local_;  // local index of the function among the home leaf's level functions
-  std::vector<std::unordered_map<Index, Index>> leaf_index_;  // per level: cell -> element
+  std::vector<std::unordered_map<Key, Index, KeyHash>> leaf_index_;  // per level: cell -> element
   Index max_local_ = 0;
   int num_levels_ = 1;
 };

@@ -6,6 +6,7 @@
 // cell. Tensor-product B-splines on dyadically refined knots implement it in basis/thb; the hierarchical space
 // itself (hierarchical_space.hpp) only talks to this interface.
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,48 +16,60 @@
 
 namespace iga::basis::hierarchical {
 
+/// A cell or function within its level. 128 bits: level 40 of a 16 × 16 patch has 2^88 cells, and the corner
+/// singularity of an L-shape needs some 30 levels for 1e6 dofs at degree 2 (about 45 at degree 3).
+__extension__ typedef __int128 Key;
+struct KeyHash {
+  std::size_t operator()(Key k) const {
+    const auto lo = static_cast<unsigned long long>(k), hi = static_cast<unsigned long long>(k >> 64);
+    return std::hash<unsigned long long>()(lo ^ (hi * 0x9E3779B97F4A7C15ULL + (lo << 6) + (lo >> 2)));
+  }
+};
+/// Decimal form of a key, for messages.
+std::string to_string(Key k);
+
 class LevelHierarchy {
  public:
   virtual ~LevelHierarchy() = default;
 
   /// Space::name() of the hierarchical spaces built on it (the backend's name).
   virtual std::string name() const = 0;
-  /// The deepest level the scheme can index (cells and functions of deeper levels would overflow Index).
+  /// The deepest level the scheme can index (cells and functions of deeper levels would overflow Key, or knots would round together).
   virtual int max_level() const = 0;
   /// Cells of level 0, numbered 0..num_root_cells()-1 (deeper levels are never enumerated).
   virtual Index num_root_cells() const = 0;
   /// Cell c of level l + 1 in slot 0..3 of cell `cell` of level l. Child slot k covers the reference
   /// sub-square child_map() gives.
-  virtual Index child(int level, Index cell, int slot) const = 0;
+  virtual Key child(int level, Key cell, int slot) const = 0;
   /// Parent (level - 1) of a cell of level >= 1, and the slot the cell has in it.
-  virtual Index parent(int level, Index cell, int& slot) const = 0;
+  virtual Key parent(int level, Key cell, int& slot) const = 0;
   /// The affine map from the reference square of a child in `slot` to its parent's: x_parent = a x + b.
   virtual void child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const = 0;
 
   /// The level's functions that are non-zero on the cell, in the local order of evaluate() (at most
   /// max_local_functions()); returns their number.
-  virtual int local_functions(int level, Index cell, Index* out) const = 0;
+  virtual int local_functions(int level, Key cell, Key* out) const = 0;
   virtual int max_local_functions() const = 0;
   /// The cells of the level on which the function is non-zero (its support), in any order.
-  virtual void support(int level, Index function, std::vector<Index>& cells) const = 0;
+  virtual void support(int level, Key function, std::vector<Key>& cells) const = 0;
   /// Two-scale relation on one child: parent-local function i restricted to the child in `slot` equals
   /// Σ_j k(i, j) × child-local function j (k: parent local × child local).
-  virtual void refinement(int level, Index cell, int slot, Eigen::MatrixXd& k) const = 0;
+  virtual void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const = 0;
   /// The level's local functions on the cell at reference points (unit square), with parametric
   /// derivatives up to `derivatives` (BasisValues conventions).
-  virtual void evaluate(int level, Index cell, const Eigen::Matrix2Xd& pts, int derivatives,
+  virtual void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives,
                         BasisValues& out) const = 0;
-  virtual ElementKind kind(int, Index) const { return {}; }
+  virtual ElementKind kind(int, Key) const { return {}; }
 
   /// Boundary: the part of side `side` of the cell (side numbering as basis::side_point on the square), or
   /// -1 when the side is interior.
-  virtual int boundary_part(int level, Index cell, int side) const = 0;
+  virtual int boundary_part(int level, Key cell, int side) const = 0;
   virtual std::vector<std::string> boundary_part_names() const = 0;
   /// The cell of the same level across an interior side, and its side there (the shared side runs the other
   /// way on it).
-  virtual Index neighbour(int level, Index cell, int side, int& their_side) const = 0;
+  virtual Key neighbour(int level, Key cell, int side, int& their_side) const = 0;
   /// Smoothness of the level's functions across an interior side (0: only C0).
-  virtual int continuity(int level, Index cell, int side) const = 0;
+  virtual int continuity(int level, Key cell, int side) const = 0;
 };
 
 }  // namespace iga::basis::hierarchical

@@ -11,12 +11,12 @@ namespace {
 
 class Refiner {
  public:
-  Refiner(const HierarchicalSpace& space, int m) : space_(space), h_(space.hierarchy()), m_(m), refined_(space.refined()) {
+  Refiner(const HierarchicalSpace& space, int m) : h_(space.hierarchy()), m_(m), refined_(space.refined()) {
     fbuf_.resize(static_cast<std::size_t>(h_.max_local_functions()));
   }
 
   // Refines leaf (level, cell) after its neighbourhood; returns the number of cells refined.
-  Index refine(int level, Index cell) {
+  Index refine(int level, Key cell) {
     if (is_refined(level, cell)) return 0;
     if (level + 1 > h_.max_level()) {
       throw UnsupportedError("local refinement: level " + std::to_string(level + 1) + " is deeper than the " +
@@ -26,22 +26,22 @@ class Refiner {
     const int k = level - m_ + 2;  // level of the support extension
     if (m_ >= 2 && k >= 1) {
       // The cell's ancestor at level k, the supports of the level-k functions on it, their parents (level k - 1).
-      Index anc = cell;
+      Key anc = cell;
       int slot = 0;
       for (int l = level; l > k; --l) anc = h_.parent(l, anc, slot);
       const int n = h_.local_functions(k, anc, fbuf_.data());
-      std::vector<Index> parents;
+      std::vector<Key> parents;
       for (int j = 0; j < n; ++j) {
         h_.support(k, fbuf_[static_cast<std::size_t>(j)], cells_);
-        for (Index c : cells_) parents.push_back(h_.parent(k, c, slot));
+        for (Key c : cells_) parents.push_back(h_.parent(k, c, slot));
       }
       std::sort(parents.begin(), parents.end());
       parents.erase(std::unique(parents.begin(), parents.end()), parents.end());
-      for (Index p : parents) {
+      for (Key p : parents) {
         // Bring the cell of level k - 1 into the mesh (coarser leaves containing it first), then refine it.
         while (!exists(k - 1, p)) {
           int l = k - 1;
-          Index c = p;
+          Key c = p;
           while (!exists(l, c)) c = h_.parent(l--, c, slot);
           count += refine(l, c);
         }
@@ -56,20 +56,19 @@ class Refiner {
   RefinedCells take() { return std::move(refined_); }
 
  private:
-  bool is_refined(int level, Index cell) const {
+  bool is_refined(int level, Key cell) const {
     return level < static_cast<int>(refined_.size()) && refined_[static_cast<std::size_t>(level)].count(cell) > 0;
   }
-  bool exists(int level, Index cell) const {
+  bool exists(int level, Key cell) const {
     if (level == 0) return true;
     int slot = 0;
     return is_refined(level - 1, h_.parent(level, cell, slot));
   }
 
-  const HierarchicalSpace& space_;
   const LevelHierarchy& h_;
   int m_;
   RefinedCells refined_;
-  std::vector<Index> fbuf_, cells_;
+  std::vector<Key> fbuf_, cells_;
 };
 
 }  // namespace

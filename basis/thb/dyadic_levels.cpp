@@ -1,12 +1,15 @@
 #include "basis/thb/dyadic_levels.hpp"
 
 #include <cmath>
+#include <mutex>
 
 #include "basis/bspline/extraction.hpp"
 #include "basis/bspline/tensor_space.hpp"
 #include "core/error.hpp"
 
 namespace iga::basis::thb {
+
+using hierarchical::Key;
 
 DyadicKnots::DyadicKnots(const bspline::KnotVector& coarse) : p_(coarse.degree()) {
   const std::vector<double>& t = coarse.knots();
@@ -29,66 +32,84 @@ DyadicKnots::DyadicKnots(const bspline::KnotVector& coarse) : p_(coarse.degree()
 
 int DyadicKnots::max_level() const {
   int m = 0;
-  while (((k_ + p_ + extra_.back()) << (m + 1)) < (Index{1} << 30)) ++m;
+  while (m < 44 && (Key{k_ + p_ + extra_.back()} << (m + 1)) < (Key{1} << 60)) ++m;
   return m;
 }
 
-Index DyadicKnots::span(int level, Index interval) const {
+Key DyadicKnots::span(int level, Key interval) const {
   return p_ + interval + extra_[static_cast<std::size_t>(interval >> level)];
 }
 
-double DyadicKnots::breakpoint(int level, Index j) const {
-  const Index c = j >> level;
+double DyadicKnots::breakpoint(int level, Key j) const {
+  const Index c = static_cast<Index>(j >> level);
   if (c >= k_) return b_.back();
-  const Index r = j - (c << level);
+  const Key r = j - (Key{c} << level);
   return b_[static_cast<std::size_t>(c)] +
          (b_[static_cast<std::size_t>(c + 1)] - b_[static_cast<std::size_t>(c)]) * std::ldexp(static_cast<double>(r), -level);
 }
 
-int DyadicKnots::multiplicity(int level, Index j) const {
+int DyadicKnots::multiplicity(int level, Key j) const {
   if (j == 0 || j == num_intervals(level)) return p_ + 1;
-  const Index c = j >> level;
+  const Key c = j >> level;
   return (c << level) == j ? mult_[static_cast<std::size_t>(c)] : 1;
 }
 
-void DyadicKnots::window(int level, Index interval, double* w) const {
+void DyadicKnots::window(int level, Key interval, double* w) const {
   // Left: t_mu down to t_{mu-p}, walking breakpoints interval, interval-1, ... with their multiplicities.
   int filled = 0;
-  for (Index j = interval; filled <= p_; --j) {
+  for (Key j = interval; filled <= p_; --j) {
     const double x = breakpoint(level, j);
     for (int m = multiplicity(level, j); m > 0 && filled <= p_; --m) w[p_ - filled++] = x;
   }
   filled = 0;
-  for (Index j = interval + 1; filled <= p_; ++j) {
+  for (Key j = interval + 1; filled <= p_; ++j) {
     const double x = breakpoint(level, j);
     for (int m = multiplicity(level, j); m > 0 && filled <= p_; --m) w[p_ + 1 + filled++] = x;
   }
 }
 
-void DyadicKnots::support(int level, Index function, Index& first, Index& last) const {
+void DyadicKnots::support(int level, Key function, Key& first, Key& last) const {
   // span() is strictly increasing in the interval: first = min{i : span(i) >= f}, last = max{i : span(i) - p <= f}.
-  const Index n = num_intervals(level);
-  Index lo = 0, hi = n - 1;
+  const Key n = num_intervals(level);
+  Key lo = 0, hi = n - 1;
   while (lo < hi) {
-    const Index mid = (lo + hi) / 2;
+    const Key mid = (lo + hi) / 2;
     if (span(level, mid) >= function) hi = mid; else lo = mid + 1;
   }
   first = lo;
   lo = first;
   hi = n - 1;
   while (lo < hi) {
-    const Index mid = (lo + hi + 1) / 2;
+    const Key mid = (lo + hi + 1) / 2;
     if (span(level, mid) - p_ <= function) lo = mid; else hi = mid - 1;
   }
   last = lo;
 }
 
-void DyadicKnots::refinement(int level, Index interval, int half, Eigen::MatrixXd& k) const {
+void DyadicKnots::refinement(int level, Key interval, int half, Eigen::MatrixXd& k) const {
   double wc[32], wf[32];
   window(level, interval, wc);
   window(level + 1, 2 * interval + half, wf);
+  // The relation depends only on the knot windows up to an affine change of the parameter: cache it by the
+  // windows normalised to the parent interval (interior intervals of dyadic levels all share one).
+  const double a = wc[p_], h = wc[p_ + 1] - wc[p_];
+  std::vector<long long> key(static_cast<std::size_t>(4 * p_ + 4));
+  for (int i = 0; i < 2 * p_ + 2; ++i) {
+    key[static_cast<std::size_t>(i)] = std::llround((wc[i] - a) / h * 1e12);
+    key[static_cast<std::size_t>(2 * p_ + 2 + i)] = std::llround((wf[i] - a) / h * 1e12);
+  }
+  {
+    std::lock_guard<std::mutex> lock(cache_mutex_);
+    const auto it = cache_.find(key);
+    if (it != cache_.end()) {
+      k = it->second;
+      return;
+    }
+  }
   k.resize(p_ + 1, p_ + 1);
   for (int b = 0; b <= p_; ++b) k.col(b) = bspline::blossom_row(wc, p_, wf + b + 1);
+  std::lock_guard<std::mutex> lock(cache_mutex_);
+  cache_.emplace(std::move(key), k);
 }
 
 DyadicBsplineLevels::DyadicBsplineLevels(const bspline::KnotVector& u, const bspline::KnotVector& v) : u_(u), v_(v) {
@@ -97,15 +118,15 @@ DyadicBsplineLevels::DyadicBsplineLevels(const bspline::KnotVector& u, const bsp
 
 int DyadicBsplineLevels::max_level() const { return std::min(u_.max_level(), v_.max_level()); }
 
-Index DyadicBsplineLevels::child(int level, Index cell, int slot) const {
-  const Index nx = u_.num_intervals(level);
-  const Index ix = cell % nx, iy = cell / nx;
+Key DyadicBsplineLevels::child(int level, Key cell, int slot) const {
+  const Key nx = u_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
   return (2 * ix + (slot & 1)) + 2 * nx * (2 * iy + (slot >> 1));
 }
 
-Index DyadicBsplineLevels::parent(int level, Index cell, int& slot) const {
-  const Index nx = u_.num_intervals(level);
-  const Index ix = cell % nx, iy = cell / nx;
+Key DyadicBsplineLevels::parent(int level, Key cell, int& slot) const {
+  const Key nx = u_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
   slot = static_cast<int>((ix & 1) + 2 * (iy & 1));
   return (ix >> 1) + (nx >> 1) * (iy >> 1);
 }
@@ -115,12 +136,12 @@ void DyadicBsplineLevels::child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2
   b = Eigen::Vector2d(0.5 * (slot & 1), 0.5 * (slot >> 1));
 }
 
-int DyadicBsplineLevels::local_functions(int level, Index cell, Index* out) const {
-  const Index nx = u_.num_intervals(level);
-  const Index ix = cell % nx, iy = cell / nx;
+int DyadicBsplineLevels::local_functions(int level, Key cell, Key* out) const {
+  const Key nx = u_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
   const int p = u_.degree(), q = v_.degree();
-  const Index fx = u_.span(level, ix) - p, fy = v_.span(level, iy) - q;
-  const Index nfx = u_.num_functions(level);
+  const Key fx = u_.span(level, ix) - p, fy = v_.span(level, iy) - q;
+  const Key nfx = u_.num_functions(level);
   int n = 0;
   for (int b = 0; b <= q; ++b) {
     for (int a = 0; a <= p; ++a) out[n++] = (fx + a) + nfx * (fy + b);
@@ -128,20 +149,20 @@ int DyadicBsplineLevels::local_functions(int level, Index cell, Index* out) cons
   return n;
 }
 
-void DyadicBsplineLevels::support(int level, Index function, std::vector<Index>& cells) const {
-  const Index nfx = u_.num_functions(level), nx = u_.num_intervals(level);
-  Index x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+void DyadicBsplineLevels::support(int level, Key function, std::vector<Key>& cells) const {
+  const Key nfx = u_.num_functions(level), nx = u_.num_intervals(level);
+  Key x0 = 0, x1 = 0, y0 = 0, y1 = 0;
   u_.support(level, function % nfx, x0, x1);
   v_.support(level, function / nfx, y0, y1);
   cells.clear();
-  for (Index iy = y0; iy <= y1; ++iy) {
-    for (Index ix = x0; ix <= x1; ++ix) cells.push_back(ix + nx * iy);
+  for (Key iy = y0; iy <= y1; ++iy) {
+    for (Key ix = x0; ix <= x1; ++ix) cells.push_back(ix + nx * iy);
   }
 }
 
-void DyadicBsplineLevels::refinement(int level, Index cell, int slot, Eigen::MatrixXd& k) const {
-  const Index nx = u_.num_intervals(level);
-  const Index ix = cell % nx, iy = cell / nx;
+void DyadicBsplineLevels::refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const {
+  const Key nx = u_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
   thread_local Eigen::MatrixXd ku, kv;
   u_.refinement(level, ix, slot & 1, ku);
   v_.refinement(level, iy, slot >> 1, kv);
@@ -152,9 +173,9 @@ void DyadicBsplineLevels::refinement(int level, Index cell, int slot, Eigen::Mat
   }
 }
 
-void DyadicBsplineLevels::evaluate(int level, Index cell, const Eigen::Matrix2Xd& pts, int derivatives,
+void DyadicBsplineLevels::evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives,
                                    BasisValues& out) const {
-  const Index nx = u_.num_intervals(level);
+  const Key nx = u_.num_intervals(level);
   double w[32];
   u_.window(level, cell % nx, w);
   thread_local Eigen::MatrixXd cu, cv;
@@ -164,9 +185,9 @@ void DyadicBsplineLevels::evaluate(int level, Index cell, const Eigen::Matrix2Xd
   bspline::evaluate_bezier_tensor(cu, cv, pts, derivatives, out);
 }
 
-int DyadicBsplineLevels::boundary_part(int level, Index cell, int side) const {
-  const Index nx = u_.num_intervals(level), ny = v_.num_intervals(level);
-  const Index ix = cell % nx, iy = cell / nx;
+int DyadicBsplineLevels::boundary_part(int level, Key cell, int side) const {
+  const Key nx = u_.num_intervals(level), ny = v_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
   switch (side) {
     case 0: return iy == 0 ? 0 : -1;
     case 1: return ix == nx - 1 ? 1 : -1;
@@ -175,8 +196,8 @@ int DyadicBsplineLevels::boundary_part(int level, Index cell, int side) const {
   }
 }
 
-Index DyadicBsplineLevels::neighbour(int level, Index cell, int side, int& their_side) const {
-  const Index nx = u_.num_intervals(level);
+Key DyadicBsplineLevels::neighbour(int level, Key cell, int side, int& their_side) const {
+  const Key nx = u_.num_intervals(level);
   their_side = (side + 2) % 4;
   switch (side) {
     case 0: return cell - nx;
@@ -186,9 +207,9 @@ Index DyadicBsplineLevels::neighbour(int level, Index cell, int side, int& their
   }
 }
 
-int DyadicBsplineLevels::continuity(int level, Index cell, int side) const {
-  const Index nx = u_.num_intervals(level);
-  const Index ix = cell % nx, iy = cell / nx;
+int DyadicBsplineLevels::continuity(int level, Key cell, int side) const {
+  const Key nx = u_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
   switch (side) {
     case 0: return v_.degree() - v_.multiplicity(level, iy);
     case 1: return u_.degree() - u_.multiplicity(level, ix + 1);
@@ -197,9 +218,9 @@ int DyadicBsplineLevels::continuity(int level, Index cell, int side) const {
   }
 }
 
-Eigen::Vector4d DyadicBsplineLevels::cell_box(int level, Index cell) const {
-  const Index nx = u_.num_intervals(level);
-  const Index ix = cell % nx, iy = cell / nx;
+Eigen::Vector4d DyadicBsplineLevels::cell_box(int level, Key cell) const {
+  const Key nx = u_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
   return {u_.breakpoint(level, ix), u_.breakpoint(level, ix + 1), v_.breakpoint(level, iy), v_.breakpoint(level, iy + 1)};
 }
 

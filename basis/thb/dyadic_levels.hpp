@@ -4,7 +4,9 @@
 // kept, new knots simple), bi-degree (p, q) on every level. Knot vectors of deep levels are never stored: knots,
 // spans and windows are computed from the coarse breakpoints, so level 20 of a 16-interval patch costs nothing
 // until a cell of it is used.
+#include <map>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "basis/bspline/knot_vector.hpp"
@@ -19,21 +21,22 @@ class DyadicKnots {
   explicit DyadicKnots(const bspline::KnotVector& coarse);
 
   int degree() const { return p_; }
-  Index num_intervals(int level) const { return k_ << level; }
-  Index num_functions(int level) const { return p_ + num_intervals(level) + extra_.back(); }
+  hierarchical::Key num_intervals(int level) const { return hierarchical::Key{k_} << level; }
+  hierarchical::Key num_functions(int level) const { return p_ + num_intervals(level) + extra_.back(); }
   /// The span mu of interval i (t_mu <= x < t_mu+1): its functions are mu - p .. mu.
-  Index span(int level, Index interval) const;
+  hierarchical::Key span(int level, hierarchical::Key interval) const;
   /// Value and multiplicity of breakpoint j = 0..num_intervals(level) (the ends have multiplicity p + 1).
-  double breakpoint(int level, Index j) const;
-  int multiplicity(int level, Index j) const;
+  double breakpoint(int level, hierarchical::Key j) const;
+  int multiplicity(int level, hierarchical::Key j) const;
   /// The knots t_{mu-p} .. t_{mu+p+1} of interval i (2p + 2 values) into w.
-  void window(int level, Index interval, double* w) const;
+  void window(int level, hierarchical::Key interval, double* w) const;
   /// First and last interval on which function f is non-zero.
-  void support(int level, Index function, Index& first, Index& last) const;
+  void support(int level, hierarchical::Key function, hierarchical::Key& first, hierarchical::Key& last) const;
   /// Two-scale relation of interval i and its child 2i + half: k(a, b) with parent-local function a on the child
   /// = Σ_b k(a, b) child-local function b (k = blossoms of the parent's functions at the child's knots).
-  void refinement(int level, Index interval, int half, Eigen::MatrixXd& k) const;
-  /// The coarsest level whose interval count reaches 2^30 (cells and functions then overflow 64-bit indices).
+  void refinement(int level, hierarchical::Key interval, int half, Eigen::MatrixXd& k) const;
+  /// The deepest level: 2^-level of a coarse interval stays well above the rounding of its knots (level <= 44),
+  /// and cells and functions fit 128-bit keys.
   int max_level() const;
 
  private:
@@ -42,6 +45,8 @@ class DyadicKnots {
   std::vector<double> b_;       // coarse breakpoints
   std::vector<int> mult_;       // their multiplicities (ends p + 1)
   std::vector<Index> extra_;    // extra_[c] = Σ_{c' = 1..min(c, K-1)} (mult_c' - 1), c = 0..K-1
+  mutable std::mutex cache_mutex_;  // two-scale relations by normalised knot windows
+  mutable std::map<std::vector<long long>, Eigen::MatrixXd> cache_;
 };
 
 /// The B-spline levels of a patch as a LevelHierarchy: cell ix + nx(l) iy, function jx + nfx(l) jy, child
@@ -51,28 +56,29 @@ class DyadicKnots {
 /// Boundary parts as TensorSpace ("v0", "u1", "v1", "u0").
 class DyadicBsplineLevels final : public hierarchical::LevelHierarchy {
  public:
+  using Key = hierarchical::Key;
   DyadicBsplineLevels(const bspline::KnotVector& u, const bspline::KnotVector& v);
 
   std::string name() const override { return "bspline"; }
   int max_level() const override;
-  Index num_root_cells() const override { return u_.num_intervals(0) * v_.num_intervals(0); }
-  Index child(int level, Index cell, int slot) const override;
-  Index parent(int level, Index cell, int& slot) const override;
+  Index num_root_cells() const override { return static_cast<Index>(u_.num_intervals(0) * v_.num_intervals(0)); }
+  Key child(int level, Key cell, int slot) const override;
+  Key parent(int level, Key cell, int& slot) const override;
   void child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
-  int local_functions(int level, Index cell, Index* out) const override;
+  int local_functions(int level, Key cell, Key* out) const override;
   int max_local_functions() const override { return (u_.degree() + 1) * (v_.degree() + 1); }
-  void support(int level, Index function, std::vector<Index>& cells) const override;
-  void refinement(int level, Index cell, int slot, Eigen::MatrixXd& k) const override;
-  void evaluate(int level, Index cell, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
-  int boundary_part(int level, Index cell, int side) const override;
+  void support(int level, Key function, std::vector<Key>& cells) const override;
+  void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const override;
+  void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
+  int boundary_part(int level, Key cell, int side) const override;
   std::vector<std::string> boundary_part_names() const override { return {"v0", "u1", "v1", "u0"}; }
-  Index neighbour(int level, Index cell, int side, int& their_side) const override;
-  int continuity(int level, Index cell, int side) const override;
+  Key neighbour(int level, Key cell, int side, int& their_side) const override;
+  int continuity(int level, Key cell, int side) const override;
 
   const DyadicKnots& knots_u() const { return u_; }
   const DyadicKnots& knots_v() const { return v_; }
   /// Knot-parameter rectangle (u_a, u_b, v_a, v_b) of a cell.
-  Eigen::Vector4d cell_box(int level, Index cell) const;
+  Eigen::Vector4d cell_box(int level, Key cell) const;
 
  private:
   DyadicKnots u_, v_;

@@ -38,11 +38,11 @@ const basis::thb::DyadicBsplineLevels& levels(const HierarchicalSpace& s) {
 // Element and reference point of knot-parameter point (u, v).
 std::pair<Index, Eigen::Vector2d> locate(const HierarchicalSpace& s, double u, double v) {
   const auto& h = levels(s);
-  Index ix = 0, iy = 0;
+  basis::hierarchical::Key ix = 0, iy = 0;
   while (ix + 1 < h.knots_u().num_intervals(0) && h.knots_u().breakpoint(0, ix + 1) <= u) ++ix;
   while (iy + 1 < h.knots_v().num_intervals(0) && h.knots_v().breakpoint(0, iy + 1) <= v) ++iy;
   int level = 0;
-  Index cell = ix + h.knots_u().num_intervals(0) * iy;
+  basis::hierarchical::Key cell = ix + h.knots_u().num_intervals(0) * iy;
   while (s.is_refined(level, cell)) {
     const Eigen::Vector4d box = h.cell_box(level, cell);
     const int slot = (u >= 0.5 * (box(0) + box(1)) ? 1 : 0) + (v >= 0.5 * (box(2) + box(3)) ? 2 : 0);
@@ -142,13 +142,13 @@ TEST_P(ThbDegree, EqualsTheGlobalTruncationOfEachFunction) {
     level.emplace_back(basis::bspline::insert_midpoints(level.back().knots_u()),
                        basis::bspline::insert_midpoints(level.back().knots_v()));
   }
-  ASSERT_EQ(level[top].num_dofs(), h.knots_u().num_functions(top) * h.knots_v().num_functions(top));
+  ASSERT_EQ(level[top].num_dofs(), static_cast<Index>(h.knots_u().num_functions(top) * h.knots_v().num_functions(top)));
   // Each THB function by the definition: e_f at its level, then refine and truncate level by level.
   // The level-l function index (jx + nfx jy) equals TensorSpace's dof index, so the levels agree.
-  std::vector<Index> support;
+  std::vector<basis::hierarchical::Key> support;
   auto inside = [&](int l, Index f) {
     h.support(l, f, support);
-    for (Index c : support) {
+    for (auto c : support) {
       if (!space->exists(l, c)) return false;
     }
     return true;
@@ -160,7 +160,7 @@ TEST_P(ThbDegree, EqualsTheGlobalTruncationOfEachFunction) {
       if (!inside(l, f)) continue;
       h.support(l, f, support);
       bool all_refined = true;
-      for (Index c : support) all_refined = all_refined && space->is_refined(l, c);
+      for (auto c : support) all_refined = all_refined && space->is_refined(l, c);
       if (all_refined) continue;
       Eigen::VectorXd c = Eigen::VectorXd::Unit(level[l].num_dofs(), f);
       for (int m = l; m < top; ++m) {
@@ -221,6 +221,9 @@ TEST_P(ThbDegree, NestedSpacesReproduceTheCoarseFunctions) {
     const Eigen::SparseMatrix<double> pr = chain[s]->prolongation_from(*chain[s - 1]);
     ASSERT_EQ(pr.rows(), chain[s]->num_dofs());
     ASSERT_EQ(pr.cols(), chain[s - 1]->num_dofs());
+    // The matrix-free path gives the same coefficients.
+    const Eigen::MatrixXd c = Eigen::MatrixXd::Random(chain[s - 1]->num_dofs(), 2);
+    EXPECT_LT((chain[s]->coefficients_from(*chain[s - 1], c) - pr * c).cwiseAbs().maxCoeff(), 1e-13);
     for (const Eigen::Vector2d& x : pts) {
       const Eigen::VectorXd coarse = values_at(*chain[s - 1], x(0), x(1));
       const Eigen::VectorXd fine = values_at(*chain[s], x(0), x(1));
