@@ -7,8 +7,11 @@
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLUtilities.h>
 #include <vtkCellType.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -254,4 +257,57 @@ TEST_F(IgaPoisson, BadInputGivesOneClearLine) {
     EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": " << r.err;
   }
+}
+
+TEST_F(IgaPoisson, AdaptiveWritesASeriesAndTheHistory) {
+  const Outcome r = run("--quiet --geometry l-shape --problem corner --degree 2 --refine 1 --adaptive 6 --theta 0.5 "
+                        "--vtu ad.vtu --json ad.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = report("ad.json");
+  ASSERT_TRUE(j.contains("adaptive"));
+  const nlohmann::json& a = j["adaptive"];
+  EXPECT_EQ(a["stopped"], "steps");
+  ASSERT_EQ(a["history"].size(), 7u);
+  long previous = 0;
+  for (const nlohmann::json& s : a["history"]) {
+    for (const char* key : {"dofs", "elements", "levels", "estimate", "energy_error", "efficiency_index", "seconds"}) {
+      EXPECT_TRUE(s.contains(key)) << key;
+    }
+    EXPECT_GT(s["dofs"].get<long>(), previous);  // every step refines
+    previous = s["dofs"].get<long>();
+    EXPECT_NEAR(s["efficiency_index"].get<double>(), s["estimate"].get<double>() / s["energy_error"].get<double>(), 1e-12);
+  }
+  EXPECT_EQ(j["dofs"], a["history"].back()["dofs"]);  // the top-level figures are the last step's
+  EXPECT_EQ(a["history"].back()["levels"].get<int>(), 7);  // Dörfler marks the corner element every step
+  // The .pvd lists the 7 files in order; each reads back with cell data level and indicator.
+  vtkSmartPointer<vtkXMLDataElement> pvd;
+  pvd.TakeReference(vtkXMLUtilities::ReadElementFromFile((dir_ / "ad.pvd").c_str()));
+  ASSERT_NE(pvd, nullptr);
+  EXPECT_STREQ(pvd->GetAttribute("type"), "Collection");
+  vtkXMLDataElement* collection = pvd->GetNestedElement(0);
+  ASSERT_EQ(collection->GetNumberOfNestedElements(), 7);
+  for (int k = 0; k < 7; ++k) {
+    vtkXMLDataElement* set = collection->GetNestedElement(k);
+    char expected[32];
+    std::snprintf(expected, sizeof expected, "ad_step%03d.vtu", k);
+    EXPECT_STREQ(set->GetAttribute("file"), expected);
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->SetFileName((dir_ / expected).c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    EXPECT_EQ(grid->GetNumberOfCells(), a["history"][k]["elements"].get<long>() * 9);
+    vtkDataArray* level = grid->GetCellData()->GetArray("level");
+    expect_finite_array(grid->GetCellData()->GetArray("indicator"), 1);
+    ASSERT_NE(level, nullptr);
+    double range[2];
+    level->GetRange(range);
+    EXPECT_EQ(range[1], a["history"][k]["levels"].get<int>() - 1);
+  }
+}
+
+TEST_F(IgaPoisson, AdaptiveNeedsALocallyRefinableBasis) {
+  const Outcome r = run("--quiet --basis polyhedral --mesh " + std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj --adaptive 2");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("has no local refinement"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
