@@ -13,6 +13,9 @@ namespace iga::basis::bspline {
 /// intervals, element index ex + nex * ey, each mapped to the unit square: reference (s, t) is
 /// u = a_x + s (b_x - a_x), v = a_y + t (b_y - a_y). Derivatives are with respect to (s, t).
 /// Boundary parts: 0 "v0" (v = v_min, side 0), 1 "u1" (u = u_max, side 1), 2 "v1" (side 2), 3 "u0" (side 3).
+/// Interior edges: first the knot lines u = const (element ex side 1 against ex + 1 side 3, row by row), then
+/// v = const (element side 2 against the one above, side 0); continuity = degree − multiplicity of the knot
+/// in that direction (a knot of multiplicity p gives 0).
 class TensorSpace final : public Space {
  public:
   TensorSpace(KnotVector u, KnotVector v);
@@ -26,6 +29,7 @@ class TensorSpace final : public Space {
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override;
   std::vector<std::string> boundary_part_names() const override { return {"v0", "u1", "v1", "u0"}; }
+  std::vector<InteriorEdge> interior_edges() const override;
 
   const KnotVector& knots_u() const { return u_; }
   const KnotVector& knots_v() const { return v_; }
