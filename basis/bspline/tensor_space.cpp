@@ -1,5 +1,7 @@
 #include "basis/bspline/tensor_space.hpp"
 
+#include <algorithm>
+
 #include "basis/bspline/bernstein.hpp"
 #include "basis/bspline/extraction.hpp"
 #include "basis/bspline/knot_insertion.hpp"
@@ -90,32 +92,38 @@ void TensorSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives
   evaluate_bezier_tensor(cu_[static_cast<std::size_t>(ex)], cv_[static_cast<std::size_t>(ey)], pts, derivatives, out);
 }
 
-std::vector<InteriorEdge> TensorSpace::interior_edges() const {
-  auto multiplicity = [](const KnotVector& kv, Index span) {
-    int m = 0;
-    for (Index i = span; i >= 0 && kv[i] == kv[span]; --i) ++m;
-    return m;
-  };
-  std::vector<InteriorEdge> edges;
-  for (Index ey = 0; ey < ney_; ++ey) {
-    for (Index ex = 0; ex + 1 < nex_; ++ex) {
-      const int c = u_.degree() - multiplicity(u_, u_.interval_spans()[static_cast<std::size_t>(ex + 1)]);
-      edges.push_back({{ex + nex_ * ey, ex + 1 + nex_ * ey}, {1, 3}, {0.0, 1.0}, {1.0, 0.0}, c});
-    }
-  }
-  for (Index ey = 0; ey + 1 < ney_; ++ey) {
-    const int c = v_.degree() - multiplicity(v_, v_.interval_spans()[static_cast<std::size_t>(ey + 1)]);
-    for (Index ex = 0; ex < nex_; ++ex) edges.push_back({{ex + nex_ * ey, ex + nex_ * (ey + 1)}, {2, 0}, {0.0, 1.0}, {1.0, 0.0}, c});
-  }
-  return edges;
-}
-
 std::vector<BoundaryEdge> TensorSpace::boundary_edges() const {
   std::vector<BoundaryEdge> edges;
   for (Index ex = 0; ex < nex_; ++ex) edges.push_back({ex, 0, 0});
   for (Index ey = 0; ey < ney_; ++ey) edges.push_back({nex_ - 1 + nex_ * ey, 1, 1});
   for (Index ex = nex_ - 1; ex >= 0; --ex) edges.push_back({ex + nex_ * (ney_ - 1), 2, 2});
   for (Index ey = ney_ - 1; ey >= 0; --ey) edges.push_back({nex_ * ey, 3, 3});
+  return edges;
+}
+
+std::vector<InteriorEdge> TensorSpace::interior_edges() const {
+  // Interval k starts at knot index spans[k]; the knot between intervals k − 1 and k has multiplicity
+  // spans[k] − spans[k − 1] (t_mu < t_{mu+1} = ... = t_{mu'} < t_{mu'+1}).
+  auto continuity = [](const KnotVector& kv, Index k) {
+    const auto& spans = kv.interval_spans();
+    return kv.degree() - static_cast<int>(spans[static_cast<std::size_t>(k)] - spans[static_cast<std::size_t>(k - 1)]);
+  };
+  std::vector<InteriorEdge> edges;
+  edges.reserve(static_cast<std::size_t>(std::max<Index>(0, (nex_ - 1) * ney_) + std::max<Index>(0, nex_ * (ney_ - 1))));
+  for (Index ey = 0; ey < ney_; ++ey) {
+    for (Index ex = 1; ex < nex_; ++ex) {
+      // side 1 of the left element runs up (1, t), side 3 of the right one down (0, 1 − t).
+      const Index e = ex - 1 + nex_ * ey;
+      edges.push_back({{e, e + 1}, {1, 3}, {0.0, 1.0}, {1.0, 0.0}, continuity(u_, ex)});
+    }
+  }
+  for (Index ey = 1; ey < ney_; ++ey) {
+    for (Index ex = 0; ex < nex_; ++ex) {
+      // side 2 of the lower element runs left (1 − t, 1), side 0 of the upper one right (t, 0).
+      const Index e = ex + nex_ * (ey - 1);
+      edges.push_back({{e, e + nex_}, {2, 0}, {0.0, 1.0}, {1.0, 0.0}, continuity(v_, ey)});
+    }
+  }
   return edges;
 }
 

@@ -13,6 +13,9 @@ namespace iga::basis::bspline {
 /// intervals, element index ex + nex * ey, each mapped to the unit square: reference (s, t) is
 /// u = a_x + s (b_x - a_x), v = a_y + t (b_y - a_y). Derivatives are with respect to (s, t).
 /// Boundary parts: 0 "v0" (v = v_min, side 0), 1 "u1" (u = u_max, side 1), 2 "v1" (side 2), 3 "u0" (side 3).
+/// Interior edges: first the knot lines u = const (element ex side 1 against ex + 1 side 3, row by row), then
+/// v = const (element side 2 against the one above, side 0); continuity = degree − multiplicity of the knot
+/// in that direction (a knot of multiplicity p gives 0).
 class TensorSpace final : public Space {
  public:
   TensorSpace(KnotVector u, KnotVector v);

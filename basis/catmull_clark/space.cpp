@@ -182,6 +182,29 @@ void CatmullClarkSpace::build_boundary() {
   }
 }
 
+std::vector<InteriorEdge> CatmullClarkSpace::interior_edges() const {
+  // Side of the rotated element f that half-edge h (of face f) is, as in build_boundary().
+  auto side_of = [&](Index h, Index f) {
+    const int j = static_cast<int>(h - net_.face_half_edge(f));
+    return (j - elements_[static_cast<std::size_t>(f)].rotation + 4) % 4;
+  };
+  // An element's EV is its corner c0, on its sides 0 (c0 → c1) and 3 (c3 → c0).
+  auto at_ev = [&](Index f, int side) {
+    return elements_[static_cast<std::size_t>(f)].kind.family == Family::Irregular && (side == 0 || side == 3);
+  };
+  std::vector<InteriorEdge> edges;
+  edges.reserve(static_cast<std::size_t>(net_.num_half_edges() / 2));
+  for (Index h = 0; h < net_.num_half_edges(); ++h) {
+    const mesh::HalfEdge& he = net_.half_edge(h);
+    if (he.twin < h) continue;  // a boundary edge (twin -1) or listed from its twin
+    const Index f0 = he.face, f1 = net_.half_edge(he.twin).face;
+    const int s0 = side_of(h, f0), s1 = side_of(he.twin, f1);
+    const int continuity = at_ev(f0, s0) || at_ev(f1, s1) ? 1 : 2;
+    edges.push_back({{f0, f1}, {s0, s1}, {0.0, 1.0}, {1.0, 0.0}, continuity});
+  }
+  return edges;
+}
+
 std::span<const Index> CatmullClarkSpace::dofs(Index e) const {
   const Element& el = elements_[static_cast<std::size_t>(e)];
   return {dofs_.data() + el.dof_offset, static_cast<std::size_t>(el.num_dofs)};

@@ -46,6 +46,10 @@ namespace iga::basis::catmull_clark {
 /// order); a loop without corners is the single part "b<loop>.0". boundary_edges() lists the boundary edges
 /// part by part, each part in boundary order (domain on the left), as sides of the rotated elements.
 ///
+/// Interior edges: one per net edge with two faces, in half-edge order of its lower half-edge; side k of an
+/// element runs c_k → c_{k+1}, so the two sides of a net edge run opposite ways (t 0 → 1 on the first,
+/// 1 → 0 on the second). continuity 2, or 1 where the edge ends at an EV (the space is only C1 there).
+///
 /// Throws InputError (prefixed by `name`) for: an isolated vertex; an interior vertex with 2 faces; an
 /// interior valence above 16 or a boundary vertex with more than 15 faces; (when the global step is needed)
 /// a face with more than 16 sides. UnsupportedError for a face whose one-ring cannot be unfolded into a disc
@@ -75,6 +79,7 @@ class CatmullClarkSpace final : public Space {
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override { return boundary_edges_; }
   std::vector<std::string> boundary_part_names() const override { return part_names_; }
+  std::vector<InteriorEdge> interior_edges() const override;
   /// Stam elements: stam_view(n) with to_points = stam_map(e); boundary-EV elements: their configuration's
   /// view on level1, shift 1, the three level-0 tiles explicit.
   std::optional<SubdivisionElement> subdivision_element(Index e) const override;

@@ -1,6 +1,7 @@
 #include "basis/half_box/space.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "basis/half_box/dependency.hpp"
 #include "basis/half_box/exact_view.hpp"
@@ -152,6 +153,25 @@ Geometry make_half_box_geometry(const mesh::PolyMesh& net, const std::string& na
   for (Index v = 0; v < n.num_vertices(); ++v) positions.row(v) = n.point(v).head(dim).transpose();
   Eigen::MatrixXd cp = space->from_vertices() * positions;
   return Geometry(space, std::move(cp));
+}
+
+std::vector<InteriorEdge> HalfBoxSpace::interior_edges() const {
+  std::vector<Index> element_of(static_cast<std::size_t>(net_.num_vertices()), -1);
+  for (Index e = 0; e < num_elements(); ++e) element_of[static_cast<std::size_t>(element_vertex(e))] = e;
+  std::vector<InteriorEdge> edges;
+  edges.reserve(static_cast<std::size_t>(3 * num_elements() / 2));
+  for (Index e = 0; e < num_elements(); ++e) {
+    const Element& el = elements_[static_cast<std::size_t>(e)];
+    for (int side = 0; side < 3; ++side) {
+      const Index o = element_of[static_cast<std::size_t>(el.across[static_cast<std::size_t>(side)])];
+      if (o <= e) continue;  // no patch there (a boundary side), or listed from the other element
+      const auto& back = elements_[static_cast<std::size_t>(o)].across;
+      const auto it = std::find(back.begin(), back.end(), el.vertex);
+      if (it == back.end()) throw std::logic_error("half-box: patch sides of a net edge do not match");
+      edges.push_back({{e, o}, {side, static_cast<int>(it - back.begin())}, {0.0, 1.0}, {1.0, 0.0}, 1});
+    }
+  }
+  return edges;
 }
 
 }  // namespace iga::basis::half_box

@@ -18,6 +18,10 @@
 // so refined spaces are nested. The boundary curves depend on interior rows of control points; Dirichlet data
 // then become coupled constraints (fem/dirichlet.hpp). The thesis's boundary-interpolating double-knot rule
 // is not implemented.
+//
+// Interior edges: side i of the patch of v is dual to the net edge v–w, w = the vertex across it; when w has a
+// patch too, its side across from v is the same curve run the other way (F_i, F_{i+1} swap around w). One edge
+// per such net edge, from the element with the lower index; continuity 1 (half-box splines are C1).
 #include <Eigen/Sparse>
 #include <memory>
 #include <span>
@@ -45,6 +49,7 @@ class HalfBoxSpace final : public Space {
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override { return boundary_; }
   std::vector<std::string> boundary_part_names() const override { return {"boundary"}; }
+  std::vector<InteriorEdge> interior_edges() const override;
   /// EF elements: half_box_view(n) on the element's own n + 7 points (exact_view.hpp).
   std::optional<SubdivisionElement> subdivision_element(Index e) const override;
 

@@ -103,7 +103,7 @@ PolyhedralSpace::PolyhedralSpace(const mesh::PolyMesh& net) : net_(net), sites_(
     }
   }
   if (elements_.empty()) throw InputError("polyhedral splines: the net produces no patch (the outer layer recedes)");
-  build_boundary();
+  build_sides();
 }
 
 ElementKind PolyhedralSpace::kind(Index e) const {
@@ -155,7 +155,7 @@ void PolyhedralSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivat
   }
 }
 
-void PolyhedralSpace::build_boundary() {
+void PolyhedralSpace::build_sides() {
   // A generic embedding of the dofs: sides that run along the same curve in it do so for every net.
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> coord(-1.0, 1.0);
@@ -200,22 +200,31 @@ void PolyhedralSpace::build_boundary() {
     std::sort(grid[gi].begin(), grid[gi].end());
   }
   auto same = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return (a - b).cwiseAbs().maxCoeff() <= tol; };
-  // Does side o run along side s, whole (s = o or o reversed) or s being one half of o?
-  auto covers = [&](Index s, Index o) {
+  // How side s runs along side o: with s(t), t in [0, 1], equal to o(r0 + t (r1 − r0)), the range (r0, r1)
+  // on o (whole: (0, 1) or (1, 0); s one half of o: (0, ½), (½, 1) or reversed); `half_of_s` when o is one
+  // half of s instead (the piece is then listed from o); nothing when they do not meet along a curve.
+  struct Match {
+    bool found = false, half_of_s = false;
+    double r0 = 0.0, r1 = 1.0;
+  };
+  auto match = [&](Index s, Index o) {
     const auto& a = samples[static_cast<std::size_t>(s)];
     const auto& b = samples[static_cast<std::size_t>(o)];
-    bool fwd = true, rev = true, h1 = true, h1r = true, h2 = true, h2r = true;
-    for (int k = 0; k < 5; ++k) {
-      fwd = fwd && same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(k)]);
-      rev = rev && same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(4 - k)]);
+    // a(ts[k]) against b(r0 + ts[k] (r1 − r0)) for the samples k that land on o's samples.
+    auto along = [&](double r0, double r1) {
+      for (int k = 0; k < 5; ++k) {
+        const double r = 4.0 * (r0 + ts[k] * (r1 - r0));  // o's sample index, when integral
+        const double ri = std::round(r);
+        if (std::abs(r - ri) > 1e-12) continue;
+        if (!same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(ri)])) return false;
+      }
+      return true;
+    };
+    const double ranges[6][2] = {{0.0, 1.0}, {1.0, 0.0}, {0.0, 0.5}, {0.5, 1.0}, {0.5, 0.0}, {1.0, 0.5}};
+    for (const auto& r : ranges) {
+      if (along(r[0], r[1])) return Match{true, false, r[0], r[1]};
     }
-    for (int k = 0; k < 5; k += 2) {  // a(t) = b(t/2), b(1/2 + t/2), reversed
-      h1 = h1 && same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(k / 2)]);
-      h2 = h2 && same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(2 + k / 2)]);
-      h1r = h1r && same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(2 - k / 2)]);
-      h2r = h2r && same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(4 - k / 2)]);
-    }
-    // o being one half of s: s(t/2) = o(t) etc. (points 0, 1/4, 1/2 of s against 0, 1/2, 1 of o)
+    // o being one half of s: o(t) = s(t/2) etc. (points 0, 1/4, 1/2 of s against 0, 1/2, 1 of o)
     bool g1 = true, g1r = true, g2 = true, g2r = true;
     for (int k = 0; k < 5; k += 2) {
       g1 = g1 && same(b[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(k / 2)]);
@@ -223,23 +232,38 @@ void PolyhedralSpace::build_boundary() {
       g1r = g1r && same(b[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(2 - k / 2)]);
       g2r = g2r && same(b[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(4 - k / 2)]);
     }
-    return fwd || rev || h1 || h1r || h2 || h2r || g1 || g1r || g2 || g2r;
+    return Match{g1 || g1r || g2 || g2r, true, 0.0, 0.0};
   };
+  // A side whose samples coincide (the collapsed side of a polar patch at its pole) is a point, no edge.
+  auto degenerate = [&](Index s) {
+    const auto& a = samples[static_cast<std::size_t>(s)];
+    return same(a[0], a[2]) && same(a[2], a[4]);
+  };
+  std::vector<Index> candidates;
   for (Index s = 0; s < nsides; ++s) {
     // Every side that covers s, or is half of it, passes through s's midpoint (as its midpoint, quarter
     // point or end point).
-    bool covered = false;
+    candidates.clear();
     const Eigen::Vector3d& mid = samples[static_cast<std::size_t>(s)][2];
-    for (int gi = 0; gi < 2 && !covered; ++gi) {
+    for (int gi = 0; gi < 2; ++gi) {
       const Key k = key(mid, 0.5 * gi);
       const auto first = std::lower_bound(grid[gi].begin(), grid[gi].end(), std::make_pair(k, Index{-1}));
       for (auto it = first; it != grid[gi].end() && it->first == k; ++it) {
-        const Index o = it->second;
-        if (o / 4 != s / 4 && covers(s, o)) {
-          covered = true;
-          break;
-        }
+        if (it->second / 4 != s / 4) candidates.push_back(it->second);
       }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    bool covered = false;
+    const bool point = degenerate(s);
+    for (const Index o : candidates) {
+      const Match m = match(s, o);
+      if (!m.found) continue;
+      covered = true;
+      if (point || m.half_of_s) continue;
+      const bool whole = std::abs(std::abs(m.r1 - m.r0) - 1.0) < 1e-12;
+      if (whole && o < s) continue;  // the same piece, listed from o
+      interior_.push_back({{s / 4, o / 4}, {static_cast<int>(s % 4), static_cast<int>(o % 4)}, {0.0, m.r0}, {1.0, m.r1}, 1});
     }
     if (!covered) boundary_.push_back({s / 4, static_cast<int>(s % 4), 0});
   }

@@ -13,6 +13,10 @@
 // half (cap patches meet a bi-2 patch side in two halves); sides are compared by their points at
 // t = 0, 1/4, 1/2, 3/4, 1 in a generic (random) embedding of the dofs, so the test is combinatorial in effect.
 // One boundary part, "boundary".
+// Interior edges: the same matching of sides, in a generic embedding — one edge per pair of sides that run
+// along the same curve (t0 = 0, t1 = 1 on the first, the range on the second), or per side that is one half
+// of a longer one (the range (0, ½), (½, 1) or reversed on the longer side); collapsed sides of polar patches
+// are points, no edges. continuity 1 (the patches join C1 or G1).
 #include <memory>
 #include <span>
 #include <string>
@@ -42,6 +46,7 @@ class PolyhedralSpace final : public Space {
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override { return boundary_; }
   std::vector<std::string> boundary_part_names() const override { return {"boundary"}; }
+  std::vector<InteriorEdge> interior_edges() const override { return interior_; }
 
   /// The control net the space was built from (dofs are some of its vertices).
   const mesh::PolyMesh& control_net() const { return net_; }
@@ -62,13 +67,14 @@ class PolyhedralSpace final : public Space {
     std::vector<Index> dofs;
     Eigen::MatrixXd c;  // 16 × dofs
   };
-  void build_boundary();
+  void build_sides();  // boundary_ and interior_ by matching sides
 
   mesh::PolyMesh net_;
   std::vector<ConfigurationSite> sites_;
   std::vector<Element> elements_;
   std::vector<Index> vertex_of_dof_;
   std::vector<BoundaryEdge> boundary_;
+  std::vector<InteriorEdge> interior_;
   Index max_local_ = 0;
 };
 
