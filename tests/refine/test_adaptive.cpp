@@ -10,23 +10,14 @@
 #include "fem/problems.hpp"
 #include "quadrature/rule_provider.hpp"
 #include "refine/adaptive.hpp"
+#include "support/rates.hpp"
 
 namespace {
 
 using namespace iga;
 
-// Least-squares slope of log(error) against log(dofs), negated: the convergence rate in dofs.
 double rate(const std::vector<double>& dofs, const std::vector<double>& err) {
-  const std::size_t n = dofs.size();
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = std::log(dofs[i]), y = std::log(err[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(n * sxy - sx * sy) / (n * sxx - sx * sx);
+  return test::fitted_rate_in_dofs(dofs, err);
 }
 
 fem::PoissonProblem corner_problem() {
