@@ -64,7 +64,7 @@ class DyadicBsplineLevels final : public hierarchical::LevelHierarchy {
   Index num_root_cells() const override { return static_cast<Index>(u_.num_intervals(0) * v_.num_intervals(0)); }
   Key child(int level, Key cell, int slot) const override;
   Key parent(int level, Key cell, int& slot) const override;
-  void child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
+  void child_map(int level, Key cell, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
   int local_functions(int level, Key cell, Key* out) const override;
   int max_local_functions() const override { return (u_.degree() + 1) * (v_.degree() + 1); }
   void support(int level, Key function, std::vector<Key>& cells) const override;
