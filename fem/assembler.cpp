@@ -98,6 +98,9 @@ const AssemblyPlan& Assembler::plan() const {
 }
 
 void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
+  if (derivatives != 1 && derivatives != 2) {
+    throw InputError("element context: derivatives must be 1 or 2, got " + std::to_string(derivatives));
+  }
   const basis::Space& space = geometry_.space();
   ctx.element = e;
   ctx.rule = &rules_.rule(space.kind(e));
@@ -112,7 +115,12 @@ void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
     ctx.grad.middleCols(c * q, q) = ctx.basis.du.array().rowwise() * ctx.geo.tu.row(c).array() +
                                     ctx.basis.dv.array().rowwise() * ctx.geo.tv.row(c).array();
   }
-  if (derivatives >= 2) prepare_second_derivatives(ctx);
+  if (derivatives >= 2) {
+    prepare_second_derivatives(ctx);
+  } else {
+    ctx.laplacian.resize(0, 0);  // nothing stale from an earlier call with 2
+    ctx.hessian.resize(0, 0);
+  }
 }
 
 AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,

@@ -30,6 +30,8 @@ struct ElementContext {
   /// derivatives 2, planar domains only: physical Hessians, nloc × (3q) as blocks xx, xy, yy (like grad),
   /// H_x φ = J^{-T} (H_u φ − Σ_k ∂φ/∂x_k H_u x_k) J^{-1}. Empty on surfaces (only Δ_Γ is supported there).
   Eigen::MatrixXd hessian;
+  /// Block b of the Hessians (0 xx, 1 xy, 2 yy), nloc × q.
+  auto hessian_block(int b) const { return hessian.middleCols(b * num_points(), num_points()); }
 
   Eigen::Index num_points() const { return weight.size(); }
   /// Component c of the gradients (nloc × q).
