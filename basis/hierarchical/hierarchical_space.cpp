@@ -263,7 +263,7 @@ std::vector<InteriorEdge> HierarchicalSpace::interior_edges() const {
         int slot = 0;
         cell = h.parent(level, cell, slot);
         --level;
-        h.child_map(slot, a, b);
+        h.child_map(level, cell, slot, a, b);
         p0 = a * p0 + b;
         p1 = a * p1 + b;
       }

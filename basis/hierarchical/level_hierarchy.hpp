@@ -30,8 +30,11 @@ class LevelHierarchy {
   virtual Index child(int level, Index cell, int slot) const = 0;
   /// Parent (level - 1) of a cell of level >= 1, and the slot the cell has in it.
   virtual Index parent(int level, Index cell, int& slot) const = 0;
-  /// The affine map from the reference square of a child in `slot` to its parent's: x_parent = a x + b.
-  virtual void child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const = 0;
+  /// The affine map from the reference square of the child in `slot` of cell `cell` of level `level` to the
+  /// cell's reference square: x_parent = a x + b. It may depend on the cell, not only on the slot: schemes whose
+  /// elements are rotated (Catmull–Clark: corner 0 is the extraordinary vertex) give a child a frame rotated
+  /// against its parent's.
+  virtual void child_map(int level, Index cell, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const = 0;
 
   /// The level's functions that are non-zero on the cell, in the local order of evaluate() (at most
   /// max_local_functions()); returns their number.

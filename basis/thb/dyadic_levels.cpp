@@ -110,7 +110,7 @@ Index DyadicBsplineLevels::parent(int level, Index cell, int& slot) const {
   return (ix >> 1) + (nx >> 1) * (iy >> 1);
 }
 
-void DyadicBsplineLevels::child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const {
+void DyadicBsplineLevels::child_map(int, Index, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const {
   a = 0.5 * Eigen::Matrix2d::Identity();
   b = Eigen::Vector2d(0.5 * (slot & 1), 0.5 * (slot >> 1));
 }

@@ -58,7 +58,7 @@ class DyadicBsplineLevels final : public hierarchical::LevelHierarchy {
   Index num_root_cells() const override { return u_.num_intervals(0) * v_.num_intervals(0); }
   Index child(int level, Index cell, int slot) const override;
   Index parent(int level, Index cell, int& slot) const override;
-  void child_map(int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
+  void child_map(int level, Index cell, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
   int local_functions(int level, Index cell, Index* out) const override;
   int max_local_functions() const override { return (u_.degree() + 1) * (v_.degree() + 1); }
   void support(int level, Index function, std::vector<Index>& cells) const override;
