@@ -12,8 +12,9 @@
 //
 // Levels are built on first use (a level's net, its space, the inverse dof → elements map and the boundary
 // table), under a mutex; a built level never moves or changes, so evaluation is thread-safe. Level l has
-// 4^l × faces(level 0) elements and costs about 2.5 kB per element (the space's 16 × 16 regular operators
-// dominate); max_level() is the deepest level with at most kMaxFaces elements.
+// 4^l × faces(level 0) elements and costs about 2.9 kB per element (measured RSS, square_evs.obj levels 1–5:
+// level 5, 147456 elements, builds in 4 s; the space's 16 × 16 regular operators dominate); max_level() is the
+// deepest level with at most kMaxFaces elements.
 #include <Eigen/Sparse>
 #include <atomic>
 #include <memory>
@@ -28,7 +29,7 @@ namespace iga::basis::catmull_clark {
 
 class CatmullClarkLevels final : public hierarchical::LevelHierarchy {
  public:
-  /// The element budget of one level (2^20: about 2.6 GB for that level alone).
+  /// The element budget of one level (2^20: about 3 GB for that level alone).
   static constexpr Index kMaxFaces = Index{1} << 20;
 
   /// Level 0 is `level0` itself (its control net, elements, dofs, boundary parts). Its net has quads only and
