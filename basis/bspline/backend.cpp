@@ -5,7 +5,7 @@
 #include "basis/bspline/knot_insertion.hpp"
 #include "basis/bspline/patches.hpp"
 #include "basis/bspline/tensor_space.hpp"
-#include "basis/hierarchical/refine.hpp"
+#include "basis/hierarchical/geometry_refinement.hpp"
 #include "basis/thb/dyadic_levels.hpp"
 #include "basis/registry.hpp"
 #include "core/error.hpp"
@@ -24,10 +24,7 @@ std::shared_ptr<const HierarchicalSpace> thb_of(const Geometry& g, Eigen::Sparse
   const TensorSpace* t = bspline::tensor_space(g.space());
   if (!t) throw InputError("a '" + g.space().name() + "' space is not a B-spline space");
   auto h = thb::coarse_thb_space(t->knots_u(), t->knots_v());
-  to_thb->resize(h->num_dofs(), t->num_dofs());
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Index d = 0; d < h->num_dofs(); ++d) entries.emplace_back(d, static_cast<Index>(h->dof_function(d)), 1.0);
-  to_thb->setFromTriplets(entries.begin(), entries.end());
+  *to_thb = hierarchical::level0_permutation(*h, t->num_dofs());
   return h;
 }
 
@@ -36,26 +33,7 @@ Refinement refine_thb(const Geometry& geometry, std::span<const Index> marked, i
                       bool with_prolongation) {
   Eigen::SparseMatrix<double> to_thb;
   const auto coarse = thb_of(geometry, &to_thb);
-  const hierarchical::LocalRefinement r = marked.size() == static_cast<std::size_t>(coarse->num_elements()) && admissibility == 0
-                                              ? hierarchical::refine_all(*coarse)
-                                              : hierarchical::refine_marked(*coarse, marked, admissibility);
-  facts.counts["marked"] = r.marked;
-  facts.counts["added"] = r.added;
-  facts.counts["levels"] = r.space->num_levels();
-  const Eigen::MatrixXd coarse_cp = to_thb.size() > 0 ? Eigen::MatrixXd(to_thb * geometry.control_points()) : geometry.control_points();
-  Eigen::SparseMatrix<double> p;
-  Eigen::MatrixXd cp;
-  if (with_prolongation) {
-    p = r.space->prolongation_from(*coarse);
-    cp = p * coarse_cp;
-    if (to_thb.size() > 0) {
-      Eigen::SparseMatrix<double> composed = p * to_thb;
-      p.swap(composed);
-    }
-  } else {
-    cp = r.space->coefficients_from(*coarse, coarse_cp);
-  }
-  return {Geometry(r.space, std::move(cp)), std::move(p), true};
+  return hierarchical::refine_marked_geometry(geometry, coarse, to_thb, marked, admissibility, facts, with_prolongation);
 }
 
 const TensorSpace& tensor_of(const Geometry& g) {
@@ -67,18 +45,7 @@ const TensorSpace& tensor_of(const Geometry& g) {
 // Each step inserts the midpoint of every non-empty knot interval in both directions (Oslo, thesis §2.3.1);
 // the refinement matrices of the steps compose.
 Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts& facts) {
-  if (!bspline::tensor_space(geometry.space())) {
-    // A THB space: every element split, `steps` times.
-    Refinement r = refine_uniform(geometry, 0, facts);
-    for (int s = 0; s < steps; ++s) {
-      std::vector<Index> all(static_cast<std::size_t>(r.geometry.space().num_elements()));
-      for (std::size_t e = 0; e < all.size(); ++e) all[e] = static_cast<Index>(e);
-      Refinement next = refine_thb(r.geometry, all, 0, facts, true);
-      Eigen::SparseMatrix<double> composed = next.prolongation * r.prolongation;
-      r = {next.geometry, std::move(composed), true};
-    }
-    return r;
-  }
+  if (!bspline::tensor_space(geometry.space())) return hierarchical::refine_all_geometry(geometry, steps, facts);  // THB
   std::shared_ptr<const TensorSpace> coarse(geometry.space_ptr(), &tensor_of(geometry));
   Eigen::SparseMatrix<double> total;
   for (int s = 0; s < steps; ++s) {

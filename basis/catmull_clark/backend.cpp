@@ -2,9 +2,12 @@
 #include <Eigen/Dense>
 #include <memory>
 
+#include "basis/catmull_clark/levels.hpp"
 #include "basis/catmull_clark/space.hpp"
+#include "basis/hierarchical/refine.hpp"
 #include "basis/catmull_clark/topology.hpp"
 #include "basis/polyhedral/bezier.hpp"
+#include "basis/hierarchical/geometry_refinement.hpp"
 #include "basis/registry.hpp"
 #include "core/error.hpp"
 
@@ -12,6 +15,7 @@ namespace iga::basis {
 namespace {
 
 using catmull_clark::CatmullClarkSpace;
+using hierarchical::HierarchicalSpace;
 
 const CatmullClarkSpace& cc_of(const Geometry& g) {
   const auto* cc = dynamic_cast<const CatmullClarkSpace*>(&g.space());
@@ -30,9 +34,32 @@ Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFac
   return g;
 }
 
+// The hierarchical space of a geometry: its own, or (a Catmull–Clark space) the space as level 0 with the
+// permutation from the net's vertices to the hierarchical dofs.
+std::shared_ptr<const HierarchicalSpace> hierarchical_of(const Geometry& g, Eigen::SparseMatrix<double>* to_h) {
+  if (auto h = std::dynamic_pointer_cast<const HierarchicalSpace>(g.space_ptr())) return h;
+  std::shared_ptr<const CatmullClarkSpace> cc(g.space_ptr(), &cc_of(g));
+  auto h = catmull_clark::coarse_hierarchical_space(cc);
+  *to_h = hierarchical::level0_permutation(*h, cc->num_dofs());
+  return h;
+}
+
+// Hierarchical (truncated) refinement of the marked elements (thesis §4.2.5): a Catmull–Clark space becomes
+// level 0 first; the control points are prolongated.
+Refinement refine_hierarchical(const Geometry& geometry, std::span<const Index> marked, int admissibility,
+                               BackendFacts& facts, bool with_prolongation) {
+  Eigen::SparseMatrix<double> to_h;
+  const auto coarse = hierarchical_of(geometry, &to_h);
+  return hierarchical::refine_marked_geometry(geometry, coarse, to_h, marked, admissibility, facts, with_prolongation);
+}
+
 // `steps` subdivisions of the control net (OpenSubdiv topology); every refined net has quads only, each
-// touching at most one extraordinary vertex, so no global step is needed again.
-Refinement refine_net(const Geometry& geometry, int steps, BackendFacts&) {
+// touching at most one extraordinary vertex, so no global step is needed again. A hierarchical space: every
+// element split, `steps` times.
+Refinement refine_net(const Geometry& geometry, int steps, BackendFacts& facts) {
+  if (std::dynamic_pointer_cast<const HierarchicalSpace>(geometry.space_ptr())) {
+    return hierarchical::refine_all_geometry(geometry, steps, facts);
+  }
   catmull_clark::NetRefinement net = catmull_clark::refine_net(cc_of(geometry).control_mesh(), steps);
   auto fine = std::make_shared<const CatmullClarkSpace>(net.mesh, "refined net");
   if (fine->refinement_steps() != 0) throw NumericalError("refined Catmull–Clark net needed another global step");
@@ -75,6 +102,7 @@ Backend catmull_clark_backend() {
   b.default_refine = 1;
   b.from_net = from_net;
   b.refine = refine_net;
+  b.refine_marked = refine_hierarchical;
   b.default_quadrature = [](int) { return std::string("gauss:4"); };
   b.bezier_patches = regular_patches;
   return b;

@@ -6,6 +6,7 @@ set(IGA_CATMULL_CLARK_SOURCES
   catmull_clark/irregular_patch.cpp
   catmull_clark/topology.cpp
   catmull_clark/space.cpp
+  catmull_clark/levels.cpp
   catmull_clark/subdivision_matrix.cpp
   catmull_clark/eigen_structure.cpp
   catmull_clark/backend.cpp

@@ -1,0 +1,1 @@
+iga_add_test(test_hierarchical_cc basis/test_hierarchical_cc.cpp)
