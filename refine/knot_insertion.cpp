@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "basis/bspline/knot_vector.hpp"
 #include "core/error.hpp"
 
 namespace iga::refine {
@@ -30,18 +31,10 @@ Index find_span(const SplineCurve& c, double x) {
 }  // namespace
 
 Eigen::RowVectorXd blossom(const SplineCurve& c, Index mu, const double* args) {
+  // The one blossom of the univariate model (basis/bspline/knot_vector.hpp), on the piece's knot window.
   const int p = c.degree;
-  const auto& t = c.knots;
-  Eigen::MatrixXd w = c.control_points.middleRows(mu - p, p + 1);
-  for (int r = 1; r <= p; ++r) {
-    const double x = args[r - 1];
-    for (Index i = mu; i >= mu - p + r; --i) {
-      const double a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>(i + p + 1 - r)];
-      const Index row = i - (mu - p);
-      w.row(row) = ((b - x) * w.row(row - 1) + (x - a) * w.row(row)) / (b - a);
-    }
-  }
-  return w.row(p);
+  const Eigen::VectorXd row = basis::bspline::blossom_row(c.knots.data() + (mu - p), p, args);
+  return row.transpose() * c.control_points.middleRows(mu - p, p + 1);
 }
 
 namespace {
