@@ -291,39 +291,54 @@ std::vector<InteriorEdge> HierarchicalSpace::interior_edges() const {
   return edges;
 }
 
+Eigen::MatrixXd HierarchicalSpace::coefficients_by_descent(
+    Index columns, const std::function<bool(int, Key, Eigen::MatrixXd&)>& source) const {
+  const LevelHierarchy& h = *hierarchy_;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(num_dofs(), columns);
+  Eigen::MatrixXd k;
+  // v: a spline's local coefficients (level-local functions × columns) on the cell, from the first cell where
+  // `source` knows them, refined down the forest; at a leaf, the coefficient of each dof at home there is its
+  // local coefficient (the dual functional).
+  auto visit = [&](auto&& self, int level, Key cell, const Eigen::MatrixXd* v) -> void {
+    Eigen::MatrixXd here;
+    if (!v && source(level, cell, here)) v = &here;
+    const Index e = element_of(level, cell);
+    if (e >= 0) {
+      if (!v) throw InputError("hierarchical coefficients: the spaces are not nested");
+      const Element& el = elements_[static_cast<std::size_t>(e)];
+      for (Index i = el.dof_begin; i < el.dof_end; ++i) {
+        const Index d = dofs_[static_cast<std::size_t>(i)];
+        if (dof_home_[static_cast<std::size_t>(d)] == e) out.row(d) = v->row(dof_home_local_[static_cast<std::size_t>(d)]);
+      }
+      return;
+    }
+    for (int slot = 0; slot < 4; ++slot) {
+      if (v) {
+        h.refinement(level, cell, slot, k);
+        const Eigen::MatrixXd next = k.transpose() * *v;
+        self(self, level + 1, h.child(level, cell, slot), &next);
+      } else {
+        self(self, level + 1, h.child(level, cell, slot), nullptr);
+      }
+    }
+  };
+  for (Index r = 0; r < h.num_root_cells(); ++r) visit(visit, 0, Key{r}, nullptr);
+  return out;
+}
+
 Eigen::MatrixXd HierarchicalSpace::from_level0(const Eigen::MatrixXd& c0, Index level0_functions) const {
   if (c0.rows() != level0_functions) {
     throw InputError("hierarchical space: " + std::to_string(c0.rows()) + " level-0 coefficients for " +
                      std::to_string(level0_functions) + " level-0 functions");
   }
-  const LevelHierarchy& h = *hierarchy_;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(num_dofs(), c0.cols());
-  std::vector<Key> fbuf(static_cast<std::size_t>(h.max_local_functions()));
-  Eigen::MatrixXd k;
-  // The spline's local coefficients on each cell (level-local functions × columns), refined down the forest;
-  // at a leaf, the coefficient of each dof at home there is its local coefficient (the dual functional).
-  auto visit = [&](auto&& self, int level, Key cell, const Eigen::MatrixXd& v) -> void {
-    const Index e = element_of(level, cell);
-    if (e >= 0) {
-      const Element& el = elements_[static_cast<std::size_t>(e)];
-      for (Index i = el.dof_begin; i < el.dof_end; ++i) {
-        const Index d = dofs_[static_cast<std::size_t>(i)];
-        if (dof_home_[static_cast<std::size_t>(d)] == e) out.row(d) = v.row(dof_home_local_[static_cast<std::size_t>(d)]);
-      }
-      return;
-    }
-    for (int slot = 0; slot < 4; ++slot) {
-      h.refinement(level, cell, slot, k);
-      self(self, level + 1, h.child(level, cell, slot), Eigen::MatrixXd(k.transpose() * v));
-    }
-  };
-  for (Index c = 0; c < h.num_root_cells(); ++c) {
-    const int n = h.local_functions(0, Key{c}, fbuf.data());
-    Eigen::MatrixXd v(n, c0.cols());
+  std::vector<Key> fbuf(static_cast<std::size_t>(hierarchy_->max_local_functions()));
+  return coefficients_by_descent(c0.cols(), [&](int level, Key cell, Eigen::MatrixXd& v) {
+    if (level != 0) return false;
+    const int n = hierarchy_->local_functions(0, cell, fbuf.data());
+    v.resize(n, c0.cols());
     for (int j = 0; j < n; ++j) v.row(j) = c0.row(static_cast<Index>(fbuf[static_cast<std::size_t>(j)]));
-    visit(visit, 0, Key{c}, v);
-  }
-  return out;
+    return true;
+  });
 }
 
 Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const HierarchicalSpace& coarse) const {
@@ -385,50 +400,21 @@ Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const Hierarchi
 
 Eigen::MatrixXd HierarchicalSpace::coefficients_from(const HierarchicalSpace& coarse, const Eigen::MatrixXd& c) const {
   if (c.rows() != coarse.num_dofs()) throw InputError("hierarchical coefficients: size mismatch");
-  const LevelHierarchy& h = *hierarchy_;
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(num_dofs(), c.cols());
-  Eigen::MatrixXd k;
-  // v: the coarse spline's local coefficients (level-local functions × columns), from the coarse leaf down.
-  auto visit = [&](auto&& self, int level, Key cell, const Eigen::MatrixXd* v) -> void {
-    Eigen::MatrixXd here;
-    if (!v) {
-      const Index ce = coarse.element_of(level, cell);
-      if (ce >= 0) {
-        const Element& cel = coarse.elements_[static_cast<std::size_t>(ce)];
-        const auto rows = coarse.dofs(ce);
-        Eigen::MatrixXd local(static_cast<Index>(rows.size()), c.cols());
-        for (std::size_t r = 0; r < rows.size(); ++r) local.row(static_cast<Index>(r)) = c.row(rows[r]);
-        if (cel.coeff_begin < 0) {
-          here = local;
-        } else {
-          here = Eigen::Map<const Eigen::MatrixXd>(coarse.coeffs_.data() + cel.coeff_begin, cel.dof_end - cel.dof_begin,
-                                                   cel.num_local).transpose() * local;
-        }
-        v = &here;
-      }
+  return coefficients_by_descent(c.cols(), [&](int level, Key cell, Eigen::MatrixXd& v) {
+    const Index ce = coarse.element_of(level, cell);
+    if (ce < 0) return false;
+    const Element& cel = coarse.elements_[static_cast<std::size_t>(ce)];
+    const auto rows = coarse.dofs(ce);
+    Eigen::MatrixXd local(static_cast<Index>(rows.size()), c.cols());
+    for (std::size_t r = 0; r < rows.size(); ++r) local.row(static_cast<Index>(r)) = c.row(rows[r]);
+    if (cel.coeff_begin < 0) {
+      v = local;
+    } else {
+      v = Eigen::Map<const Eigen::MatrixXd>(coarse.coeffs_.data() + cel.coeff_begin, cel.dof_end - cel.dof_begin,
+                                            cel.num_local).transpose() * local;
     }
-    const Index e = element_of(level, cell);
-    if (e >= 0) {
-      if (!v) throw InputError("hierarchical coefficients: the spaces are not nested");
-      const Element& el = elements_[static_cast<std::size_t>(e)];
-      for (Index i = el.dof_begin; i < el.dof_end; ++i) {
-        const Index d = dofs_[static_cast<std::size_t>(i)];
-        if (dof_home_[static_cast<std::size_t>(d)] == e) out.row(d) = v->row(dof_home_local_[static_cast<std::size_t>(d)]);
-      }
-      return;
-    }
-    for (int slot = 0; slot < 4; ++slot) {
-      if (v) {
-        h.refinement(level, cell, slot, k);
-        const Eigen::MatrixXd next = k.transpose() * *v;
-        self(self, level + 1, h.child(level, cell, slot), &next);
-      } else {
-        self(self, level + 1, h.child(level, cell, slot), nullptr);
-      }
-    }
-  };
-  for (Index r = 0; r < h.num_root_cells(); ++r) visit(visit, 0, Key{r}, nullptr);
-  return out;
+    return true;
+  });
 }
 
 }  // namespace iga::basis::hierarchical

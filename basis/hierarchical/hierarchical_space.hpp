@@ -16,6 +16,7 @@
 // between nested hierarchical spaces.
 #include <Eigen/Core>
 #include <Eigen/Sparse>
+#include <functional>
 #include <memory>
 #include <unordered_map>
 #include <unordered_set>
@@ -83,6 +84,10 @@ class HierarchicalSpace final : public Space {
     int num_local = 0;                 // level-local functions on the cell
   };
   void build();
+  /// Coefficients of a spline in this space from its local coefficients on the first cells (down every path
+  /// of the forest) where source(level, cell, v) gives them, refined down to the leaves.
+  Eigen::MatrixXd coefficients_by_descent(Index columns,
+                                          const std::function<bool(int, Key, Eigen::MatrixXd&)>& source) const;
 
   std::shared_ptr<const LevelHierarchy> hierarchy_;
   RefinedCells refined_;
