@@ -1,0 +1,82 @@
+#include "bem/boundary_integrals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "bem/laplace_kernel.hpp"
+#include "quadrature/gauss_legendre.hpp"
+
+namespace iga::bem {
+
+BoundaryIntegrator::BoundaryIntegrator(const BoundaryDiscretization& d, const KernelQuadratureOptions& options)
+    : d_(d), options_(options), cache_(static_cast<std::size_t>(d.num_elements())) {
+  const quadrature::Rule1D g = quadrature::gauss_legendre(options_.regular_order);
+  const basis::CurveGeometry& curve = d.scaled_curve();
+  for (Index e = 0; e < d.num_elements(); ++e) {
+    const BemElement& el = d.element(e);
+    ElementCache& c = cache_[static_cast<std::size_t>(e)];
+    basis::CurvePoints pts;
+    const Eigen::VectorXd t = (el.a + (el.b - el.a) * g.points.array()).matrix();
+    curve.evaluate(el.curve_element, t, pts);
+    c.x = pts.x;
+    c.normal = pts.normal;
+    c.ws = ((el.b - el.a) * g.weights.array() * pts.speed.array()).matrix();
+    basis::CurveBasisValues v;
+    d.space().evaluate(e, g.points, 0, v);
+    c.basis = v.value;
+    const Eigen::Vector3d ends(el.a, 0.5 * (el.a + el.b), el.b);
+    curve.evaluate(el.curve_element, ends, pts);
+    c.xa = pts.x.col(0);
+    c.xm = pts.x.col(1);
+    c.xb = pts.x.col(2);
+    c.length = std::max((c.xb - c.xa).norm(), pts.speed(1) * (el.b - el.a));
+  }
+}
+
+bool BoundaryIntegrator::integrate(const Eigen::Vector2d& p, Index on_curve_element, double curve_t,
+                                   Eigen::VectorXd& h, Eigen::VectorXd& g) const {
+  const Index n = d_.num_dofs();
+  h.setZero(n);
+  g.setZero(n);
+  const SingleLayerKernel v;
+  const DoubleLayerKernel dv;
+  thread_local KernelNodes nodes;
+  thread_local basis::CurveBasisValues values;
+  thread_local Eigen::VectorXd tau;
+  bool ok = true;
+  for (Index e = 0; e < d_.num_elements(); ++e) {
+    const ElementCache& c = cache_[static_cast<std::size_t>(e)];
+    const BemElement& el = d_.element(e);
+    const std::span<const Index> dofs = d_.space().dofs(e);
+    const bool same = el.curve_element == on_curve_element;
+    if (!same && admissible(c.xa, c.xm, c.xb, c.length, p, options_.admissibility)) {
+      for (Index k = 0; k < c.ws.size(); ++k) {
+        const double sv = c.ws(k) * v(p, c.x.col(k)), dvv = c.ws(k) * dv(p, c.x.col(k), c.normal.col(k));
+        for (std::size_t j = 0; j < dofs.size(); ++j) {
+          g(dofs[j]) += sv * c.basis(static_cast<Index>(j), k);
+          h(dofs[j]) += dvv * c.basis(static_cast<Index>(j), k);
+        }
+      }
+      continue;
+    }
+    nodes.clear();
+    append_kernel_nodes(d_.scaled_curve(), el.curve_element, el.a, el.b, p,
+                        same ? curve_t : std::numeric_limits<double>::quiet_NaN(), nodes, options_);
+    ok = ok && !nodes.hit_point;
+    tau.resize(static_cast<Index>(nodes.size()));
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      tau(static_cast<Index>(k)) = std::clamp((nodes.t[k] - el.a) / (el.b - el.a), 0.0, 1.0);
+    }
+    d_.space().evaluate(e, tau, 0, values);
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      for (std::size_t j = 0; j < dofs.size(); ++j) {
+        g(dofs[j]) += nodes.single[k] * values.value(static_cast<Index>(j), static_cast<Index>(k));
+        h(dofs[j]) += nodes.dbl[k] * values.value(static_cast<Index>(j), static_cast<Index>(k));
+      }
+    }
+  }
+  return ok;
+}
+
+}  // namespace iga::bem
