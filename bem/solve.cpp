@@ -71,6 +71,15 @@ LinearResult solve_linear(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, co
 
 }  // namespace
 
+Eigen::MatrixXd system_matrix(const BoundaryDiscretization& d, const BemMatrices& m) {
+  Eigen::MatrixXd a(d.num_dofs(), d.num_dofs());
+  for (Index j = 0; j < d.num_dofs(); ++j) {
+    if (d.dof_condition(j) == kDirichlet) a.col(j) = -m.G.col(j);
+    else a.col(j) = m.H.col(j);
+  }
+  return a;
+}
+
 Eigen::VectorXd interpolate_at_collocation(const BoundaryDiscretization& d, const Eigen::VectorXd& values) {
   const basis::SplineCurveSpace& space = d.space();
   Eigen::VectorXd c(d.num_dofs());
@@ -116,15 +125,11 @@ Solution solve(const BoundaryDiscretization& d, const Problem& problem, const So
   const auto start = std::chrono::steady_clock::now();
   const Index size = has_d ? n : n + 1;
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(size, size);
+  a.topLeftCorner(n, n) = system_matrix(d, m);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(size);
   for (Index j = 0; j < n; ++j) {
-    if (d.dof_condition(j) == kDirichlet) {
-      a.col(j).head(n) = -m.G.col(j);
-      b.head(n) -= m.H.col(j) * u_known(j);
-    } else {
-      a.col(j).head(n) = m.H.col(j);
-      b.head(n) += m.G.col(j) * q_known(j);
-    }
+    if (d.dof_condition(j) == kDirichlet) b.head(n) -= m.H.col(j) * u_known(j);
+    else b.head(n) += m.G.col(j) * q_known(j);
   }
   if (!has_d) {  // bordered: ∫ u_h = ∫ exact (or 0)
     Eigen::VectorXd w;

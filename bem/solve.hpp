@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "bem/assembly.hpp"
 #include "bem/boundary_discretization.hpp"
 #include "fem/function.hpp"
 
@@ -48,6 +49,10 @@ struct Solution {
 /// Neumann dofs and problem.neumann; NumericalError on a non-finite result or a GMRES run that does not
 /// reach the tolerance.
 Solution solve(const BoundaryDiscretization& d, const Problem& problem, const SolveOptions& options = {});
+
+/// The system matrix A of H u = G q with the unknowns x_j = q_j (Dirichlet dof j: column −G_j) and u_j
+/// (Neumann dof j: column H_j), before the pure-Neumann border (internal units).
+Eigen::MatrixXd system_matrix(const BoundaryDiscretization& d, const BemMatrices& m);
 
 /// The known coefficients of a segment: interpolation of `values` (one per collocation point, in the order of
 /// d.collocation_points()) on every segment; used by solve() for u on Dirichlet and q on Neumann segments.
