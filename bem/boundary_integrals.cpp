@@ -63,7 +63,8 @@ bool BoundaryIntegrator::integrate(const Eigen::Vector2d& p, Index on_curve_elem
     nodes.clear();
     append_kernel_nodes(d_.scaled_curve(), el.curve_element, el.a, el.b, p,
                         same ? curve_t : std::numeric_limits<double>::quiet_NaN(), nodes, options_);
-    ok = ok && !nodes.hit_point;
+    // Off the boundary by declaration, P must not be found on it (at an element's end point either).
+    ok = ok && !nodes.hit_point && !(on_curve_element < 0 && nodes.at_end_point);
     tau.resize(static_cast<Index>(nodes.size()));
     for (std::size_t k = 0; k < nodes.size(); ++k) {
       tau(static_cast<Index>(k)) = std::clamp((nodes.t[k] - el.a) / (el.b - el.a), 0.0, 1.0);

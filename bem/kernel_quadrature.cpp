@@ -103,6 +103,7 @@ void append_kernel_nodes(const basis::CurveGeometry& curve, Index element, doubl
   if (std::isnan(t0)) {
     if ((curve.point(element, a) - p).norm() <= tol) t0 = a;
     else if ((curve.point(element, b) - p).norm() <= tol) t0 = b;
+    out.at_end_point = !std::isnan(t0);
   }
   const double slack = 1e-14;
   if (!std::isnan(t0) && t0 >= a - slack && t0 <= b + slack) {

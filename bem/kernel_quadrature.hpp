@@ -22,11 +22,13 @@ struct KernelNodes {
   std::vector<double> single;  ///< weight × speed × v(P, x(t)) (log part included)
   std::vector<double> dbl;     ///< weight × speed × ∂v/∂n_Q(P, x(t))
   bool hit_point = false;      ///< the subdivision reached P off its declared position (P on the boundary)
+  bool at_end_point = false;   ///< P was found at an end point of the piece (t0 not given): P is on Γ
   void clear() {
     t.clear();
     single.clear();
     dbl.clear();
     hit_point = false;
+    at_end_point = false;
   }
   std::size_t size() const { return t.size(); }
 };

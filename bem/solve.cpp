@@ -44,7 +44,21 @@ struct LinearResult {
   std::string solver;
 };
 
-LinearResult solve_linear(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const SolveOptions& o) {
+// Block-Jacobi blocks: runs of at most o.gmres_block consecutive dofs inside each segment; a border row
+// (pure Neumann) joins the last block.
+std::vector<Eigen::Index> preconditioner_blocks(const BoundaryDiscretization& d, const SolveOptions& o) {
+  std::vector<Eigen::Index> starts;
+  if (o.gmres_block <= 0) return starts;
+  for (Index k = 0; k < d.space().num_segments(); ++k) {
+    const Index first = d.space().first_dof(k), nd = d.space().segment_dofs(k);
+    const Index pieces = (nd + o.gmres_block - 1) / o.gmres_block;
+    for (Index i = 0; i < pieces; ++i) starts.push_back(first + i * nd / pieces);
+  }
+  return starts;
+}
+
+LinearResult solve_linear(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, const SolveOptions& o,
+                          const std::vector<Eigen::Index>& blocks) {
   LinearResult r;
   const bool lu = o.solver == SolveOptions::Solver::LU ||
                   (o.solver == SolveOptions::Solver::Auto && a.rows() <= o.lu_limit);
@@ -56,7 +70,7 @@ LinearResult solve_linear(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, co
     r.solver = "lu";
     return r;
   }
-  const GmresResult g = gmres(a, b, o.gmres_tolerance, o.gmres_restart, o.gmres_max_iterations);
+  const GmresResult g = gmres(a, b, o.gmres_tolerance, o.gmres_restart, o.gmres_max_iterations, blocks);
   if (!g.converged) {
     throw NumericalError("bem solve: GMRES stopped at relative residual " + std::to_string(g.residual) + " after " +
                          std::to_string(g.iterations) + " iterations (tolerance " +
@@ -140,7 +154,7 @@ Solution solve(const BoundaryDiscretization& d, const Problem& problem, const So
     a.row(n).head(n) = w.transpose() / wscale;
     b(n) = target / wscale;
   }
-  const LinearResult r = solve_linear(a, b, options);
+  const LinearResult r = solve_linear(a, b, options, preconditioner_blocks(d, options));
   if (!r.x.allFinite()) throw NumericalError("bem solve: the solution is not finite (singular system?)");
 
   Solution s;

@@ -30,6 +30,9 @@ struct SolveOptions {
   double gmres_tolerance = 1e-12;  ///< relative residual
   int gmres_restart = 200;
   int gmres_max_iterations = 2000;
+  /// GMRES preconditioner: block Jacobi on runs of at most this many consecutive dofs of one segment (the
+  /// near field of each collocation point); 0 = none.
+  Index gmres_block = 64;
   Index lu_limit = 4000;  ///< Auto: LU up to this many unknowns, GMRES above
 };
 
@@ -37,7 +40,8 @@ struct Solution {
   Eigen::VectorXd u, q;  ///< coefficients on d.space() in user units (q = ∂u/∂n of the user's coordinates)
   double assembly_seconds = 0.0, solve_seconds = 0.0;
   /// LU: 1 / PartialPivLU::rcond(), Eigen's estimate of the 1-norm condition κ₁(A). GMRES: the 2-norm
-  /// condition of A on the last Krylov space (gmres.hpp), a lower bound of κ₂(A) (κ₁ / n <= κ₂ <= n κ₁).
+  /// condition of the preconditioned A M⁻¹ on the last Krylov space (gmres.hpp), a lower bound of κ₂(A M⁻¹)
+  /// (with gmres_block = 0, of κ₂(A); κ₁ / n <= κ₂ <= n κ₁).
   double condition_estimate = 0.0;
   double scale = 1.0;  ///< the discretisation's internal scale factor
   int gmres_iterations = 0;

@@ -9,6 +9,7 @@
 #include "bem/kernel_quadrature.hpp"
 #include "bem/laplace_kernel.hpp"
 #include "bem_geometries.hpp"
+#include "fem/threads.hpp"
 #include "quadrature/gauss_legendre.hpp"
 
 using iga::Index;
@@ -100,4 +101,19 @@ TEST(BemKernelQuadrature, NearlySingular) {
     EXPECT_NEAR(sl, -(prim(0.6) - prim(-0.4)) / (2 * kPi), std::max(1e-14, 1e-18 / delta)) << "delta " << delta;
     EXPECT_FALSE(n.hit_point);
   }
+}
+
+TEST(BemAssembly, SameMatricesForAnyNumberOfThreads) {
+  iga::bem::DiscretizationOptions o;
+  o.degree = 3;
+  o.refine = 2;
+  const iga::bem::BoundaryDiscretization d(tb::square_with_hole(), {0, 0, 1, 1, 1, 0, 1, 0}, o);
+  const int before = iga::fem::num_threads();
+  iga::fem::set_num_threads(1);
+  const iga::bem::BemMatrices a = iga::bem::assemble(d);
+  iga::fem::set_num_threads(2);
+  const iga::bem::BemMatrices b = iga::bem::assemble(d);
+  iga::fem::set_num_threads(before);
+  EXPECT_EQ((a.H - b.H).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((a.G - b.G).cwiseAbs().maxCoeff(), 0.0);
 }
