@@ -39,9 +39,8 @@ bool BoundaryIntegrator::integrate(const Eigen::Vector2d& p, Index on_curve_elem
   const Index n = d_.num_dofs();
   h.setZero(n);
   g.setZero(n);
-  const SingleLayerKernel v;
-  const DoubleLayerKernel dv;
   thread_local KernelNodes nodes;
+  thread_local Eigen::VectorXd kv, kd, local_g, local_h;
   thread_local basis::CurveBasisValues values;
   thread_local Eigen::VectorXd tau;
   bool ok = true;
@@ -51,12 +50,21 @@ bool BoundaryIntegrator::integrate(const Eigen::Vector2d& p, Index on_curve_elem
     const std::span<const Index> dofs = d_.space().dofs(e);
     const bool same = el.curve_element == on_curve_element;
     if (!same && admissible(c.xa, c.xm, c.xb, c.length, p, options_.admissibility)) {
-      for (Index k = 0; k < c.ws.size(); ++k) {
-        const double sv = c.ws(k) * v(p, c.x.col(k)), dvv = c.ws(k) * dv(p, c.x.col(k), c.normal.col(k));
-        for (std::size_t j = 0; j < dofs.size(); ++j) {
-          g(dofs[j]) += sv * c.basis(static_cast<Index>(j), k);
-          h(dofs[j]) += dvv * c.basis(static_cast<Index>(j), k);
-        }
+      // Far field: the kernels at the cached nodes, then (local dofs × nodes) times them.
+      const Index q = c.ws.size();
+      kv.resize(q);
+      kd.resize(q);
+      for (Index k = 0; k < q; ++k) {
+        const Eigen::Vector2d r = c.x.col(k) - p;
+        const double r2 = r.squaredNorm();
+        kv(k) = -0.5 * kInvTwoPi * c.ws(k) * std::log(r2);  // v = −ln r / (2π) = −ln r² / (4π)
+        kd(k) = -kInvTwoPi * c.ws(k) * r.dot(c.normal.col(k)) / r2;
+      }
+      local_g.noalias() = c.basis * kv;
+      local_h.noalias() = c.basis * kd;
+      for (std::size_t j = 0; j < dofs.size(); ++j) {
+        g(dofs[j]) += local_g(static_cast<Index>(j));
+        h(dofs[j]) += local_h(static_cast<Index>(j));
       }
       continue;
     }
