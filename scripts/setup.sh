@@ -11,6 +11,7 @@ packages=(
   build-essential cmake
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnlopt-cxx-dev libosd-dev libvtk9-dev
   libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev
+  python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
