@@ -238,7 +238,8 @@ TEST(BemSolve, LuAndGmresAgreeAndConditionEstimates) {
   // to it (its Krylov space is the whole space after n = 56 products).
   EXPECT_GT(a.condition_estimate, k1 / 10);
   EXPECT_LT(a.condition_estimate, k1 * 10);
-  EXPECT_LE(c.condition_estimate, k2 * (1 + 1e-6));  // a lower bound (gmres.hpp)
+  // A lower bound (gmres.hpp), here equal up to the loss of orthogonality of modified Gram–Schmidt.
+  EXPECT_LE(c.condition_estimate, k2 * (1 + 1e-4)) << c.condition_estimate / k2 - 1;
   EXPECT_GT(c.condition_estimate, k2 / 10);
   EXPECT_EQ(a.collocation_points, d.num_dofs());
   EXPECT_NEAR(a.scale, 0.5 / hole.diameter(), 1e-15);
