@@ -14,9 +14,9 @@
 #include <random>
 #include <vector>
 
+#include "basis/bspline/spline_curve.hpp"
 #include "fem/threads.hpp"
 #include "io/report.hpp"
-#include "refine/knot_insertion.hpp"
 #include "refine/refine_smooth.hpp"
 
 int main(int argc, char** argv) {
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
     std::mt19937 rng(1);
     std::uniform_real_distribution<double> coord(-1.0, 1.0);
     for (int d = min_degree; d <= max_degree; ++d) {
-      refine::SplineCurve c;
+      basis::bspline::SplineCurve c;
       c.degree = d;
       const long intervals = points - d;
       for (int i = 0; i < d; ++i) c.knots.push_back(0.0);
@@ -59,10 +59,10 @@ int main(int argc, char** argv) {
       for (int i = 0; i < d; ++i) c.knots.push_back(static_cast<double>(intervals));
       c.control_points.resize(points, 3);
       for (long i = 0; i < points; ++i) c.control_points.row(i) << coord(rng), coord(rng), coord(rng);
-      const std::vector<double> xs = refine::interval_midpoints(c, {});
+      const std::vector<double> xs = basis::bspline::interval_midpoints(c, {});
       auto time = [&](auto&& f) {
         std::vector<double> rates;
-        refine::SplineCurve out;
+        basis::bspline::SplineCurve out;
         for (int r = 0; r < repeat; ++r) {
           const auto t0 = std::chrono::steady_clock::now();
           out = f();
@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
         std::sort(rates.begin(), rates.end());
         return std::make_pair(rates[rates.size() / 2], out);
       };
-      const auto boehm = time([&] { return refine::insert_knots_boehm(c, xs); });
-      const auto oslo = time([&] { return refine::insert_knots_oslo(c, xs); });
+      const auto boehm = time([&] { return basis::bspline::insert_knots_boehm(c, xs); });
+      const auto oslo = time([&] { return basis::bspline::insert_knots_oslo(c, xs); });
       long long count = 0;
       const auto rs3 = time([&] {
         count = 0;

@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
-#include <Eigen/SPQRSupport>
 
+#include "basis/curve/trace_space.hpp"
 #include "core/error.hpp"
 
 namespace iga::fem {
@@ -13,21 +13,18 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
                                       std::shared_ptr<const Function> g) {
   DirichletConditions bc;
   if (edges.empty()) return bc;
+  // The trace space says which functions live on the edges and how the dependent ones are coupled
+  // (basis/curve/trace_space.hpp); the projection is onto its functions ψ_s = φ_s|Γ.
+  const basis::TraceSpace trace(assembler.geometry().space_ptr(), {edges.begin(), edges.end()});
   Eigen::SparseMatrix<double> m;
   Eigen::VectorXd rhs;
   const BoundaryMassForm mass;
   const BoundaryLoadForm load(std::move(g));
   assembler.assemble_boundary(edges, &mass, &load, &m, &rhs);
-  const Eigen::VectorXd diag = m.diagonal();
-  const double tol = 1e-14 * diag.maxCoeff();
+  bc.dofs = trace.surface_dofs();
+  const Index ns = static_cast<Index>(bc.dofs.size());
   std::vector<Index> local(static_cast<std::size_t>(m.rows()), -1);
-  for (Index i = 0; i < m.rows(); ++i) {
-    if (diag(i) > tol) {
-      local[static_cast<std::size_t>(i)] = static_cast<Index>(bc.dofs.size());
-      bc.dofs.push_back(i);
-    }
-  }
-  const Index nd = static_cast<Index>(bc.dofs.size());
+  for (Index k = 0; k < ns; ++k) local[static_cast<std::size_t>(bc.dofs[static_cast<std::size_t>(k)])] = k;
   std::vector<Eigen::Triplet<double>> entries;
   for (Index j = 0; j < m.outerSize(); ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(m, j); it; ++it) {
@@ -35,81 +32,16 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
       if (r >= 0 && c >= 0) entries.emplace_back(r, c, it.value());
     }
   }
-  Eigen::SparseMatrix<double> mdd(nd, nd);
-  mdd.setFromTriplets(entries.begin(), entries.end());
-  Eigen::VectorXd bd(nd);
-  for (Index k = 0; k < nd; ++k) bd(k) = rhs(bc.dofs[static_cast<std::size_t>(k)]);
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(mdd);
-  if (solver.info() == Eigen::Success && solver.vectorD().minCoeff() > 1e-11 * solver.vectorD().maxCoeff()) {
-    bc.values = solver.solve(bd);
-    return bc;
-  }
-  // Dependent traces: an independent set S by rank-revealing sparse QR (columns whose remaining norm falls
-  // below the threshold are dependent and moved to the end), the rest coupled to S.
-  const double max_diag = mdd.diagonal().maxCoeff();
-  mdd.makeCompressed();
-  Eigen::SPQR<Eigen::SparseMatrix<double>> qr;
-  qr.setPivotThreshold(1e-10 * max_diag);
-  qr.compute(mdd);
-  if (qr.info() != Eigen::Success) throw NumericalError("Dirichlet projection: QR of the boundary mass matrix failed");
-  const Index rank = qr.rank();
-  if (rank == 0) throw NumericalError("Dirichlet projection: the boundary mass matrix is zero");
-  std::vector<Index> s_local, j_local;
-  std::vector<Index> pos(static_cast<std::size_t>(nd), -1);  // position in S (>= 0) or -(1 + position in J)
-  {
-    std::vector<char> in_s(static_cast<std::size_t>(nd), 0);
-    for (Index k = 0; k < rank; ++k) in_s[static_cast<std::size_t>(qr.colsPermutation().indices()(k))] = 1;
-    for (Index k = 0; k < nd; ++k) {
-      if (in_s[static_cast<std::size_t>(k)]) {
-        pos[static_cast<std::size_t>(k)] = static_cast<Index>(s_local.size());
-        s_local.push_back(k);
-      } else {
-        pos[static_cast<std::size_t>(k)] = -1 - static_cast<Index>(j_local.size());
-        j_local.push_back(k);
-      }
-    }
-  }
-  const Index ns = static_cast<Index>(s_local.size()), nj = static_cast<Index>(j_local.size());
-  std::vector<Eigen::Triplet<double>> tss, tsj;
-  for (Index col = 0; col < mdd.outerSize(); ++col) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(mdd, col); it; ++it) {
-      const Index r = pos[static_cast<std::size_t>(it.row())], c = pos[static_cast<std::size_t>(col)];
-      if (r < 0) continue;
-      if (c >= 0) tss.emplace_back(r, c, it.value());
-      else tsj.emplace_back(r, -1 - c, it.value());
-    }
-  }
-  Eigen::SparseMatrix<double> mss(ns, ns), msj(ns, nj);
-  mss.setFromTriplets(tss.begin(), tss.end());
-  msj.setFromTriplets(tsj.begin(), tsj.end());
+  Eigen::SparseMatrix<double> mss(ns, ns);
+  mss.setFromTriplets(entries.begin(), entries.end());
   Eigen::VectorXd bs(ns);
-  for (Index a = 0; a < ns; ++a) bs(a) = bd(s_local[static_cast<std::size_t>(a)]);
+  for (Index k = 0; k < ns; ++k) bs(k) = rhs(bc.dofs[static_cast<std::size_t>(k)]);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(mss);
-  if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 0.0) {
-    throw NumericalError("Dirichlet projection: the independent boundary traces are not definite");
+  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0.0)) {
+    throw NumericalError("Dirichlet projection: the boundary mass matrix of the trace functions is not definite");
   }
-  // Column by column (A = M_SS⁻¹ M_SJ is local, hence sparse): memory O(|S|), not O(|S|·|J|). Each dependent
-  // trace must lie in the span of S: M_JJ(j, j) = M_SJ(:, j) · A(:, j).
-  std::vector<Index> all_dofs = bc.dofs;
-  bc.dofs.clear();
-  for (Index a : s_local) bc.dofs.push_back(all_dofs[static_cast<std::size_t>(a)]);
   bc.values = ldlt.solve(bs);
-  std::vector<Eigen::Triplet<double>> c;
-  Eigen::VectorXd column(ns);
-  for (Index b = 0; b < nj; ++b) {
-    const Index jb = j_local[static_cast<std::size_t>(b)];
-    column = ldlt.solve(Eigen::VectorXd(msj.col(b)));
-    double fit = 0.0;
-    for (Eigen::SparseMatrix<double>::InnerIterator it(msj, b); it; ++it) fit += it.value() * column(it.row());
-    if (std::abs(fit - mdd.coeff(jb, jb)) > 1e-8 * max_diag) {
-      throw NumericalError("Dirichlet projection: a boundary trace is not in the span of the independent ones");
-    }
-    for (Index a = 0; a < ns; ++a) {
-      if (std::abs(column(a)) > 1e-13) c.emplace_back(a, all_dofs[static_cast<std::size_t>(jb)], column(a));
-    }
-  }
-  bc.coupling.resize(ns, m.rows());
-  bc.coupling.setFromTriplets(c.begin(), c.end());
+  if (trace.dependent().nonZeros() > 0) bc.coupling = trace.dependent();
   return bc;
 }
 

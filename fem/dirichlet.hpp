@@ -16,15 +16,14 @@ struct DirichletConditions {
   Eigen::SparseMatrix<double, Eigen::RowMajor> coupling;
 };
 
-/// The L2 projection of g onto the traces of the functions that are non-zero on `edges`. A function counts
-/// as on the boundary when ∫_Γ φ_i² > 1e-14 · max_k ∫_Γ φ_k². When these traces are linearly independent
-/// (B-splines, Catmull–Clark): M_DD g_D = (∫_Γ g φ_i)_D, M_DD(i, j) = ∫_Γ φ_i φ_j, plain prescribed values.
-/// When they are not (a receding boundary, e.g. polyhedral splines, where a boundary curve depends on two
-/// rows of control points): a maximal independent set S of traces is chosen by column-pivoted QR of M_DD
-/// (relative threshold 1e-10), every other trace φ_j|Γ = Σ_s A_sj φ_s|Γ (M_SS A = M_SJ), and the condition
-/// is the affine constraint u_S + A u_J = γ with M_SS γ = (∫_Γ g φ_s)_S: the trace of u_h is the projection of
-/// g, and u_J stays free (so a function whose trace is in the trace space, e.g. an affine solution, is kept
-/// exactly). Empty edges give empty conditions.
+/// The L2 projection of g onto the traces of the functions that are non-zero on `edges`, through their trace space
+/// (basis::TraceSpace: which functions live on the edges, and a maximal independent set S of their restrictions).
+/// When the restrictions are independent (B-splines, Catmull–Clark): M_SS g_S = (∫_Γ g φ_s)_S with
+/// M_SS(i, j) = ∫_Γ φ_i φ_j, plain prescribed values. When they are not (a receding boundary, e.g. polyhedral
+/// splines, where a boundary curve depends on two rows of control points): every other trace
+/// φ_j|Γ = Σ_s A_sj φ_s|Γ (TraceSpace::dependent()), and the condition is the affine constraint u_S + A u_J = γ
+/// with the same γ: the trace of u_h is the projection of g, and u_J stays free (so a function whose trace is in
+/// the trace space, e.g. an affine solution, is kept exactly). Empty edges give empty conditions.
 DirichletConditions project_dirichlet(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
                                       std::shared_ptr<const Function> g);
 

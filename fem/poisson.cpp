@@ -34,18 +34,15 @@ const Assembler& PoissonSolver::assembler() const {
   return *sys_->assembler;
 }
 
-void PoissonSolver::setup() {
-  if (done_ >= 1) return;
-  const basis::Space& space = geometry_.space();
-  const PoissonProblem& problem = problem_;
+BoundarySplit split_boundary(const basis::Geometry& geometry, const PoissonProblem& problem) {
+  const basis::Space& space = geometry.space();
   const int parts = static_cast<int>(space.boundary_part_names().size());
   for (int p : problem.neumann_parts) {
     if (p < 0 || p >= parts) throw InputError("Neumann boundary part " + std::to_string(p) + " does not exist");
   }
-  if (problem.reaction < 0) throw InputError("reaction coefficient must be >= 0");
+  BoundarySplit split;
   Eigen::VectorXd where;
-  const std::vector<basis::BoundaryEdge> boundary = space.boundary_edges();
-  for (const basis::BoundaryEdge& e : boundary) {
+  for (const basis::BoundaryEdge& e : space.boundary_edges()) {
     bool neumann = std::find(problem.neumann_parts.begin(), problem.neumann_parts.end(), e.part) !=
                    problem.neumann_parts.end();
     if (!neumann && problem.neumann_where) {
@@ -54,12 +51,24 @@ void PoissonSolver::setup() {
       basis::BasisValues bv;
       basis::GeometryValues gv;
       space.evaluate(e.element, mid, 1, bv);
-      geometry_.evaluate(e.element, bv, gv, false);
+      geometry.evaluate(e.element, bv, gv, false);
       problem.neumann_where->values(gv.x, where);
       neumann = where(0) > 0.0;
     }
-    (neumann ? neumann_edges_ : dirichlet_edges_).push_back(e);
+    (neumann ? split.neumann : split.dirichlet).push_back(e);
   }
+  return split;
+}
+
+void PoissonSolver::setup() {
+  if (done_ >= 1) return;
+  const basis::Space& space = geometry_.space();
+  const PoissonProblem& problem = problem_;
+  if (problem.reaction < 0) throw InputError("reaction coefficient must be >= 0");
+  const std::vector<basis::BoundaryEdge> boundary = space.boundary_edges();
+  BoundarySplit split = split_boundary(geometry_, problem);
+  dirichlet_edges_ = std::move(split.dirichlet);
+  neumann_edges_ = std::move(split.neumann);
   if (!neumann_edges_.empty() && !problem.neumann) throw InputError("Neumann boundary edges are selected but no Neumann data given");
   singular_ = dirichlet_edges_.empty() && problem.reaction == 0.0;
   if (singular_ && !problem.mean_zero) {

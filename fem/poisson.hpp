@@ -47,6 +47,13 @@ struct PoissonResult {
   double compatibility_defect = 0;  ///< ∫f + ∫g_N before it was removed (mean_zero only)
 };
 
+/// The boundary edges of a geometry split by the problem's selection (neumann_parts, neumann_where): the one
+/// rule every program uses (the FEM here, the BEM in bem/). InputError for a part index that does not exist.
+struct BoundarySplit {
+  std::vector<basis::BoundaryEdge> dirichlet, neumann;
+};
+BoundarySplit split_boundary(const basis::Geometry& geometry, const PoissonProblem& problem);
+
 /// The pipeline in steps (deal.II step-6's setup_system / assemble_system / solve, DESIGN item 5), for loops
 /// that need the pieces: setup() → assemble() → solve() → errors(), each once and in this order (a step
 /// called out of order runs the missing ones first). The solver keeps references to geometry and rules (they must

@@ -21,11 +21,13 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "basis/basis_values.hpp"
 #include "basis/element_kind.hpp"
 #include "core/error.hpp"
+#include "io/vtk_file.hpp"
 
 namespace iga::io {
 
@@ -104,19 +106,13 @@ vtkNew<vtkDoubleArray> make_double_array(const char* name, int components, Index
   return a;
 }
 
-void on_vtk_error(vtkObject* /*caller*/, unsigned long /*event*/, void* client_data, void* /*call_data*/) {
-  *static_cast<bool*>(client_data) = true;
-}
+// Values (and, when `grads` is not null, physical gradients) of the written field at element e's sample points.
+using Sampler = std::function<void(Index e, const Eigen::Matrix2Xd& ref, const basis::BasisValues& bv,
+                                   const basis::GeometryValues& gv, Eigen::VectorXd& values, Eigen::Matrix3Xd* grads)>;
 
-}  // namespace
-
-void write_vtu(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd& u,
-               const VtuOptions& options, const ElementData& element_data) {
+void write_samples(const std::string& path, const basis::Geometry& geometry, const Sampler& sample, bool with_grad,
+                   const VtuOptions& options, const ElementData& element_data) {
   const basis::Space& space = geometry.space();
-  if (u.size() != space.num_dofs()) {
-    throw InputError("write_vtu: the solution has " + std::to_string(u.size()) + " coefficients, the space has " +
-                     std::to_string(space.num_dofs()) + " functions");
-  }
   if (options.samples < 2) {
     throw InputError("write_vtu: samples must be at least 2, got " + std::to_string(options.samples));
   }
@@ -140,7 +136,7 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
 
   auto coords = make_double_array("Points", 3, total_points);
   auto u_array = make_double_array("u", 1, total_points);
-  auto grad_array = make_double_array("grad_u", 3, total_points);
+  auto grad_array = make_double_array("grad_u", 3, with_grad ? total_points : 0);
   const bool with_exact = static_cast<bool>(options.exact);
   auto exact_array = make_double_array("exact", 1, with_exact ? total_points : 0);
   auto error_array = make_double_array("error", 1, with_exact ? total_points : 0);
@@ -160,7 +156,7 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
 
   double* x_out = coords->GetPointer(0);
   double* u_out = u_array->GetPointer(0);
-  double* grad_out = grad_array->GetPointer(0);
+  double* grad_out = with_grad ? grad_array->GetPointer(0) : nullptr;
   double* exact_out = with_exact ? exact_array->GetPointer(0) : nullptr;
   double* error_out = with_exact ? error_array->GetPointer(0) : nullptr;
   vtkIdType* offset_out = offsets->GetPointer(0);
@@ -186,10 +182,8 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
 
   basis::BasisValues bv;
   basis::GeometryValues gv;
-  Eigen::VectorXd local_u;
   Eigen::VectorXd values;
-  Eigen::VectorXd du;
-  Eigen::VectorXd dv;
+  Eigen::Matrix3Xd grads;
   Eigen::VectorXd exact_values;
 
   vtkIdType point_base = 0;
@@ -204,20 +198,14 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
     space.evaluate(e, p.points, 1, bv);
     geometry.evaluate(e, bv, gv, /*check=*/false);
 
-    const auto dofs = space.dofs(e);
-    local_u.resize(static_cast<Index>(dofs.size()));
-    for (std::size_t a = 0; a < dofs.size(); ++a) local_u(static_cast<Index>(a)) = u(dofs[a]);
-    values.noalias() = bv.value.transpose() * local_u;
-    du.noalias() = bv.du.transpose() * local_u;
-    dv.noalias() = bv.dv.transpose() * local_u;
+    sample(e, p.points, bv, gv, values, with_grad ? &grads : nullptr);
     if (with_exact) options.exact->values(gv.x, exact_values);
 
     for (Index k = 0; k < q; ++k) {
       const Index g = point_base + k;
-      const Eigen::Vector3d grad = gv.tu.col(k) * du(k) + gv.tv.col(k) * dv(k);
       for (int c = 0; c < 3; ++c) {
         x_out[3 * g + c] = gv.x(c, k);
-        grad_out[3 * g + c] = grad(c);
+        if (with_grad) grad_out[3 * g + c] = grads(c, k);
       }
       u_out[g] = values(k);
       if (with_exact) {
@@ -252,8 +240,10 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
   grid->SetCells(cell_types, cells);
   grid->GetPointData()->AddArray(u_array);
   grid->GetPointData()->SetActiveScalars("u");
-  grid->GetPointData()->AddArray(grad_array);
-  grid->GetPointData()->SetActiveVectors("grad_u");
+  if (with_grad) {
+    grid->GetPointData()->AddArray(grad_array);
+    grid->GetPointData()->SetActiveVectors("grad_u");
+  }
   if (with_exact) {
     grid->GetPointData()->AddArray(exact_array);
     grid->GetPointData()->AddArray(error_array);
@@ -263,24 +253,46 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
   grid->GetCellData()->AddArray(level_array);
   for (const auto& a : extra) grid->GetCellData()->AddArray(a);
 
-  // Errors are reported by the exception below; the observers also keep VTK from printing them (the writer
-  // reports a file it cannot open, its executive the failed request that follows).
-  bool vtk_error = false;
-  vtkNew<vtkCallbackCommand> on_error;
-  on_error->SetCallback(on_vtk_error);
-  on_error->SetClientData(&vtk_error);
+  write_vtk_grid(path, grid);
+}
 
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->AddObserver(vtkCommand::ErrorEvent, on_error);
-  writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, on_error);
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(grid);
-  writer->SetDataModeToBinary();
-  writer->SetCompressorTypeToZLib();
-  const int ok = writer->Write();
-  if (ok != 1 || vtk_error || writer->GetErrorCode() != vtkErrorCode::NoError) {
-    throw InputError(path, 0, "cannot write file");
+}  // namespace
+
+Eigen::Matrix2Xd sample_points(basis::Shape shape, int samples) {
+  if (samples < 2) throw InputError("write_vtu: samples must be at least 2, got " + std::to_string(samples));
+  return (shape == basis::Shape::Triangle ? triangle_pattern(samples) : quad_pattern(samples)).points;
+}
+
+void write_vtu(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd& u,
+               const VtuOptions& options, const ElementData& element_data) {
+  const basis::Space& space = geometry.space();
+  if (u.size() != space.num_dofs()) {
+    throw InputError("write_vtu: the solution has " + std::to_string(u.size()) + " coefficients, the space has " +
+                     std::to_string(space.num_dofs()) + " functions");
   }
+  Eigen::VectorXd local_u, du, dv;
+  const Sampler sample = [&](Index e, const Eigen::Matrix2Xd&, const basis::BasisValues& bv,
+                             const basis::GeometryValues& gv, Eigen::VectorXd& values, Eigen::Matrix3Xd* grads) {
+    const auto dofs = space.dofs(e);
+    local_u.resize(static_cast<Index>(dofs.size()));
+    for (std::size_t a = 0; a < dofs.size(); ++a) local_u(static_cast<Index>(a)) = u(dofs[a]);
+    values.noalias() = bv.value.transpose() * local_u;
+    du.noalias() = bv.du.transpose() * local_u;
+    dv.noalias() = bv.dv.transpose() * local_u;
+    grads->resize(3, values.size());
+    for (Index k = 0; k < values.size(); ++k) grads->col(k) = gv.tu.col(k) * du(k) + gv.tv.col(k) * dv(k);
+  };
+  write_samples(path, geometry, sample, true, options, element_data);
+}
+
+void write_vtu(const std::string& path, const basis::Geometry& geometry, const ElementField& field,
+               const VtuOptions& options, const ElementData& element_data) {
+  const Sampler sample = [&](Index e, const Eigen::Matrix2Xd& ref, const basis::BasisValues&,
+                             const basis::GeometryValues& gv, Eigen::VectorXd& values, Eigen::Matrix3Xd*) {
+    values.resize(ref.cols());
+    field(e, ref, gv.x, values);
+  };
+  write_samples(path, geometry, sample, false, options, element_data);
 }
 
 void write_pvd(const std::string& path, const std::vector<SeriesEntry>& entries) {

@@ -1,6 +1,7 @@
 #pragma once
 // Output of a discrete solution for ParaView: a VTK XML unstructured grid (.vtu).
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -47,6 +48,19 @@ void write_pvd(const std::string& path, const std::vector<SeriesEntry>& entries)
 /// Throws InputError when u.size() != num_dofs or samples < 2, and InputError(path, 0, "cannot write file")
 /// when VTK's writer fails.
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd& u,
+               const VtuOptions& options = {}, const ElementData& element_data = {});
+
+/// The reference points write_vtu samples on an element of this shape, in the order of its points in the file
+/// (2 × q; InputError for samples < 2).
+Eigen::Matrix2Xd sample_points(basis::Shape shape, int samples);
+
+/// A field given point by point on each element (a solution that is not a combination of the space's functions,
+/// e.g. the BEM's interior representation): out(k) is its value at reference point ref.col(k) of element e,
+/// physical point x.col(k) (3 × q); `out` has ref.cols() entries.
+using ElementField = std::function<void(Index e, const Eigen::Matrix2Xd& ref, const Eigen::Matrix3Xd& x,
+                                        Eigen::VectorXd& out)>;
+/// The same grid as above with "u" = field (no "grad_u"), "exact"/"error" with options.exact.
+void write_vtu(const std::string& path, const basis::Geometry& geometry, const ElementField& field,
                const VtuOptions& options = {}, const ElementData& element_data = {});
 
 }  // namespace iga::io

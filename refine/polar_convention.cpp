@@ -7,8 +7,10 @@
 
 namespace iga::refine {
 
+using basis::bspline::SplineCurve;
+
 PolarSpline to_polar(const SplineCurve& curve) {
-  validate(curve);
+  basis::bspline::validate(curve);
   PolarSpline s;
   s.degree = curve.degree;
   s.knots.assign(curve.knots.begin() + 1, curve.knots.end() - 1);

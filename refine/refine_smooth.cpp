@@ -10,6 +10,9 @@
 #include "refine/refine_smooth_stream.hpp"
 
 namespace iga::refine {
+
+using basis::bspline::SplineCurve;
+
 namespace {
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -296,7 +299,7 @@ RefineSmoothResult refine_smooth(const PolarSpline& s, const std::vector<double>
 
 SplineCurve refine_smooth(const SplineCurve& curve, const std::vector<double>& xs, RefineSmoothVariant variant,
                           long long* count) {
-  validate(curve);
+  basis::bspline::validate(curve);
   if (xs.empty()) return curve;
   std::vector<double> rest;
   const bool sorted = std::is_sorted(xs.begin(), xs.end());

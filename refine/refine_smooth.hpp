@@ -8,8 +8,8 @@
 #include <Eigen/Sparse>
 #include <vector>
 
+#include "basis/bspline/spline_curve.hpp"
 #include "basis/geometry.hpp"
-#include "refine/knot_insertion.hpp"
 #include "refine/polar_convention.hpp"
 #include "refine/uniform.hpp"
 
@@ -36,8 +36,9 @@ RefineSmoothResult refine_smooth(const PolarSpline& spline, const std::vector<do
 /// knot per non-empty interval (the one containing it); further knots in the same interval take further
 /// passes. The end knots are kept. `count` (optional) accumulates the affine combinations. With the §5
 /// variant and sorted xs, one knot per interval, the single pass reads xs directly (no per-interval array).
-SplineCurve refine_smooth(const SplineCurve& curve, const std::vector<double>& xs,
-                          RefineSmoothVariant variant = RefineSmoothVariant::levels, long long* count = nullptr);
+basis::bspline::SplineCurve refine_smooth(const basis::bspline::SplineCurve& curve, const std::vector<double>& xs,
+                                          RefineSmoothVariant variant = RefineSmoothVariant::levels,
+                                          long long* count = nullptr);
 
 /// The refinement matrix (fine × coarse) of a knot vector (standard convention, any degree) for the knots xs,
 /// computed by the algorithm applied to the unit coordinate vectors; fine knots returned in `fine_knots`.

@@ -9,6 +9,8 @@
 
 namespace iga::refine {
 
+using basis::bspline::SplineCurve;
+
 Eigen::SparseMatrix<double> refine_smooth_matrix(int degree, const std::vector<double>& knots,
                                                  const std::vector<double>& xs, std::vector<double>& fine_knots) {
   // Column j is the refinement of the unit vector e_j. A fine B-spline's coefficient on coarse B-spline j is
@@ -67,7 +69,7 @@ Refinement refine_smooth_tensor(const basis::Geometry& geometry, const std::vect
     c.control_points.resize(kv.num_basis(), 1);
     std::vector<double> fine_knots;
     Eigen::SparseMatrix<double> r =
-        refine_smooth_matrix(kv.degree(), kv.knots(), interval_midpoints(c, intervals), fine_knots);
+        refine_smooth_matrix(kv.degree(), kv.knots(), basis::bspline::interval_midpoints(c, intervals), fine_knots);
     fine = basis::bspline::KnotVector(kv.degree(), fine_knots);
     return r;
   };

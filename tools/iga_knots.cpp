@@ -1,6 +1,6 @@
 // iga-knots: refines a B-spline curve (JSON: degree, knots, control_points; standard convention) by knot
 // insertion — Boehm, Oslo or the refine-and-smooth algorithm — and writes the refined curve (same keys).
-// Thin: parses options, reads and checks the JSON, calls refine/.
+// Thin: parses options, reads and checks the JSON, calls basis/bspline/ and refine/.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <fstream>
@@ -9,14 +9,14 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "basis/bspline/spline_curve.hpp"
 #include "core/error.hpp"
-#include "refine/knot_insertion.hpp"
 #include "refine/refine_smooth.hpp"
 
 namespace {
 
 using iga::InputError;
-using iga::refine::SplineCurve;
+using iga::basis::bspline::SplineCurve;
 
 double number(const nlohmann::json& j, const std::string& where) {
   if (j.is_number()) return j.get<double>();
@@ -68,7 +68,7 @@ SplineCurve parse_curve(const std::string& text, const std::string& name) {
     }
   }
   try {
-    iga::refine::validate(c);
+    iga::basis::bspline::validate(c);
   } catch (const InputError& e) {
     throw InputError(name + ": " + e.what());
   }
@@ -120,16 +120,16 @@ int main(int argc, char** argv) {
     std::vector<double> xs = insert;
     if (xs.empty()) {
       std::vector<iga::Index> chosen(intervals.begin(), intervals.end());
-      xs = iga::refine::interval_midpoints(curve, chosen);
+      xs = iga::basis::bspline::interval_midpoints(curve, chosen);
     }
     for (double x : xs) {
       if (!std::isfinite(x)) throw InputError("--insert: a knot is not a finite number");
     }
     SplineCurve fine;
     if (algorithm == "boehm") {
-      fine = iga::refine::insert_knots_boehm(curve, xs);
+      fine = iga::basis::bspline::insert_knots_boehm(curve, xs);
     } else if (algorithm == "oslo") {
-      fine = iga::refine::insert_knots_oslo(curve, xs);
+      fine = iga::basis::bspline::insert_knots_oslo(curve, xs);
     } else {
       fine = iga::refine::refine_smooth(curve, xs);
     }

@@ -6,6 +6,47 @@
 
 namespace iga::basis::bspline {
 
+void oslo_rows(int p, std::span<const double> t, std::span<const double> tau, const OsloRowSink& row) {
+  const auto at = [](std::span<const double> k, Index i) { return k[static_cast<std::size_t>(i)]; };
+  const Index nf = static_cast<Index>(tau.size()) - p - 1;
+  const std::vector<Index> spans = domain_intervals(p, t);
+  std::vector<double> reversed(static_cast<std::size_t>(p));
+  std::size_t s = 0;  // the coarse piece of tau_j (non-decreasing in j)
+  for (Index j = 0; j < nf; ++j) {
+    const double* args = tau.data() + j + 1;
+    Index mu;
+    if (at(tau, j) >= at(t, p)) {
+      // t_mu <= tau_j < t_{mu+1} (the last piece for tau_j at the domain end): at degree k the recursion takes
+      // tau_{j+k} <= t_{mu+k} (the coarse knots after tau_j are fine knots), so every factor is in [0, 1] or
+      // multiplies an exact zero (a coefficient (t_{mu+1} - tau_{j+1}) = 0 when tau_{j+2} passes t_{mu+1}).
+      while (s + 1 < spans.size() && at(tau, j) >= at(t, spans[s] + 1)) ++s;
+      mu = spans[s];
+    } else {
+      // tau_j before the domain (unclamped knots: j < p), where no piece has a knot window: the mirror image,
+      // t_mu < tau_{j+p+1} <= t_{mu+1}, with the arguments from the right.
+      const auto past = std::lower_bound(t.begin(), t.end(), at(tau, j + p + 1));
+      mu = std::clamp(static_cast<Index>(past - t.begin()) - 1, spans.front(), spans.back());
+      std::reverse_copy(args, args + p, reversed.begin());
+      args = reversed.data();
+    }
+    row(j, mu - p, blossom_row(t.data() + (mu - p), p, args));
+  }
+}
+
+Eigen::SparseMatrix<double> oslo_matrix(int p, std::span<const double> coarse, std::span<const double> fine) {
+  const Index nf = static_cast<Index>(fine.size()) - p - 1;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(nf * (p + 1)));
+  oslo_rows(p, coarse, fine, [&](Index j, Index first, const Eigen::VectorXd& values) {
+    for (int i = 0; i <= p; ++i) {
+      if (values(i) != 0.0) entries.emplace_back(j, first + i, values(i));
+    }
+  });
+  Eigen::SparseMatrix<double> r(nf, static_cast<Index>(coarse.size()) - p - 1);
+  r.setFromTriplets(entries.begin(), entries.end());
+  return r;
+}
+
 Eigen::SparseMatrix<double> refinement_matrix(const KnotVector& coarse, const KnotVector& fine) {
   const int p = coarse.degree();
   if (fine.degree() != p) throw InputError("knot insertion: the fine knot vector has another degree");
@@ -15,19 +56,7 @@ Eigen::SparseMatrix<double> refinement_matrix(const KnotVector& coarse, const Kn
   if (!std::includes(fine.knots().begin(), fine.knots().end(), coarse.knots().begin(), coarse.knots().end())) {
     throw InputError("knot insertion: the fine knot vector does not contain every coarse knot");
   }
-  const Index n = fine.num_basis();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<std::size_t>(n * (p + 1)));
-  for (Index j = 0; j < n; ++j) {
-    const Index mu = coarse.span(fine[j]);
-    const Eigen::VectorXd row = blossom_row(coarse, mu, &fine.knots()[static_cast<std::size_t>(j + 1)]);
-    for (int i = 0; i <= p; ++i) {
-      if (row(i) != 0.0) entries.emplace_back(j, mu - p + i, row(i));
-    }
-  }
-  Eigen::SparseMatrix<double> r(n, coarse.num_basis());
-  r.setFromTriplets(entries.begin(), entries.end());
-  return r;
+  return oslo_matrix(p, coarse.knots(), fine.knots());
 }
 
 KnotVector insert_midpoints(const KnotVector& kv) {

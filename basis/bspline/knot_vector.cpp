@@ -43,9 +43,7 @@ KnotVector::KnotVector(int degree, std::vector<double> knots) : degree_(degree),
     }
     i = j + 1;
   }
-  for (Index mu = p; mu < num_basis(); ++mu) {
-    if (knots_[mu] < knots_[mu + 1]) spans_.push_back(mu);
-  }
+  spans_ = domain_intervals(p, knots_);
 }
 
 KnotVector KnotVector::uniform(int degree, Index intervals, double a, double b) {
@@ -66,36 +64,62 @@ std::vector<double> KnotVector::breakpoints() const {
   return b;
 }
 
-Index KnotVector::span(double x) const {
-  if (x <= front()) return spans_.front();
-  if (x >= back()) return spans_.back();
-  // Largest mu with t_mu <= x; since x < back(), t_{mu+1} > x >= t_mu.
-  auto it = std::upper_bound(knots_.begin(), knots_.end(), x);
-  return static_cast<Index>(it - knots_.begin()) - 1;
+Index KnotVector::span(double x) const { return find_span(degree_, knots_, x); }
+
+namespace {
+
+// One degree of the Cox–de Boor recursion on the knot window w (w[k] = t_{span-p+k}), in place: b(0..k-1)
+// holds N_{span-k+1+j, k-1}(x) on entry, b(0..k) holds N_{span-k+j, k}(x) on exit (from the top down, so each
+// entry reads only entries not yet overwritten).
+void cox_de_boor_step(const double* w, int p, int k, double x, double* b) {
+  for (int j = k; j >= 0; --j) {
+    const int i = p - k + j;  // window index of t_{span-k+j}
+    double v = 0.0;
+    if (j >= 1) {
+      const double den = w[i + k] - w[i];
+      if (den > 0) v += (x - w[i]) / den * b[j - 1];
+    }
+    if (j <= k - 1) {
+      const double den = w[i + k + 1] - w[i + 1];
+      if (den > 0) v += (w[i + k + 1] - x) / den * b[j];
+    }
+    b[j] = v;
+  }
+}
+
+}  // namespace
+
+std::vector<Index> domain_intervals(int p, std::span<const double> t) {
+  std::vector<Index> spans;
+  const Index n = static_cast<Index>(t.size()) - p - 1;
+  for (Index mu = p; mu < n; ++mu) {
+    if (t[static_cast<std::size_t>(mu)] < t[static_cast<std::size_t>(mu) + 1]) spans.push_back(mu);
+  }
+  return spans;
+}
+
+Index find_span(int p, std::span<const double> t, double x) {
+  const auto n = t.size() - static_cast<std::size_t>(p) - 1;
+  // The largest mu with t_mu <= x (x inside), with t_mu <= t_p (x before), or with t_mu < t_n (x after, or
+  // not a number).
+  if (!(x < t[n])) return static_cast<Index>(std::lower_bound(t.begin(), t.end(), t[n]) - t.begin()) - 1;
+  const double y = std::max(x, t[static_cast<std::size_t>(p)]);
+  return static_cast<Index>(std::upper_bound(t.begin(), t.end(), y) - t.begin()) - 1;
 }
 
 Eigen::MatrixXd basis_functions(const KnotVector& kv, Index span, double x, int derivatives) {
-  const int p = kv.degree();
+  return basis_functions(kv.knots().data() + (span - kv.degree()), kv.degree(), x, derivatives);
+}
+
+Eigen::MatrixXd basis_functions(const double* w, int p, double x, int derivatives) {
   // vals[q](j) = N_{span-q+j, q}(x), j = 0..q (Cox–de Boor, degree by degree).
   std::vector<Eigen::VectorXd> vals(p + 1);
-  vals[0] = Eigen::VectorXd::Ones(1);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(p + 1);
+  b(0) = 1.0;
+  vals[0] = b.head(1);
   for (int q = 1; q <= p; ++q) {
-    const Eigen::VectorXd& lo = vals[q - 1];  // lo(j) = N_{span-q+1+j, q-1}
-    Eigen::VectorXd hi = Eigen::VectorXd::Zero(q + 1);
-    for (int j = 0; j <= q; ++j) {
-      const Index i = span - q + j;
-      double v = 0.0;
-      if (j >= 1) {
-        const double den = kv[i + q] - kv[i];
-        if (den > 0) v += (x - kv[i]) / den * lo(j - 1);
-      }
-      if (j <= q - 1) {
-        const double den = kv[i + q + 1] - kv[i + 1];
-        if (den > 0) v += (kv[i + q + 1] - x) / den * lo(j);
-      }
-      hi(j) = v;
-    }
-    vals[q] = hi;
+    cox_de_boor_step(w, p, q, x, b.data());
+    vals[q] = b.head(q + 1);
   }
   // D^r N_{i,q} = q (D^{r-1} N_{i,q-1}/(t_{i+q}-t_i) - D^{r-1} N_{i+1,q-1}/(t_{i+q+1}-t_{i+1})).
   auto derivative = [&](auto&& self, int r, int q) -> Eigen::VectorXd {
@@ -104,14 +128,14 @@ Eigen::MatrixXd basis_functions(const KnotVector& kv, Index span, double x, int 
     const Eigen::VectorXd lo = self(self, r - 1, q - 1);
     Eigen::VectorXd hi = Eigen::VectorXd::Zero(q + 1);
     for (int j = 0; j <= q; ++j) {
-      const Index i = span - q + j;
+      const int i = p - q + j;  // window index of t_{span-q+j}
       double v = 0.0;
       if (j >= 1) {
-        const double den = kv[i + q] - kv[i];
+        const double den = w[i + q] - w[i];
         if (den > 0) v += lo(j - 1) / den;
       }
       if (j <= q - 1) {
-        const double den = kv[i + q + 1] - kv[i + 1];
+        const double den = w[i + q + 1] - w[i + 1];
         if (den > 0) v -= lo(j) / den;
       }
       hi(j) = q * v;
@@ -124,20 +148,10 @@ Eigen::MatrixXd basis_functions(const KnotVector& kv, Index span, double x, int 
 }
 
 Eigen::VectorXd blossom_row(const double* w, int p, const double* args) {
-  // w[k] = t_{span-p+k}, k = 0..2p+1.
-  Eigen::VectorXd b = Eigen::VectorXd::Ones(1);  // b(j) <-> index span-(k-1)+j at level k-1
-  for (int k = 1; k <= p; ++k) {
-    const double x = args[k - 1];
-    Eigen::VectorXd nb = Eigen::VectorXd::Zero(k + 1);
-    for (int j = 0; j <= k; ++j) {
-      const int i = p - k + j;  // window index of t_{span-k+j}
-      double v = 0.0;
-      if (j >= 1) v += (x - w[i]) / (w[i + k] - w[i]) * b(j - 1);
-      if (j <= k - 1) v += (w[i + k + 1] - x) / (w[i + k + 1] - w[i + 1]) * b(j);
-      nb(j) = v;
-    }
-    b = std::move(nb);
-  }
+  // The recursion of basis_functions with argument args[k-1] at degree k.
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(p + 1);
+  b(0) = 1.0;
+  for (int k = 1; k <= p; ++k) cox_de_boor_step(w, p, k, args[k - 1], b.data());
   return b;
 }
 

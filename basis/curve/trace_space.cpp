@@ -1,5 +1,6 @@
 #include "basis/curve/trace_space.hpp"
 
+#include <Eigen/LU>
 #include <Eigen/SPQRSupport>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -98,7 +99,46 @@ void split_dependent(const Eigen::SparseMatrix<double>& g, std::vector<Index>& s
   }
 }
 
+// Chebyshev polynomials T_m(x) of x in [−1, 1], m = 0..n−1.
+Eigen::RowVectorXd chebyshev_row(double x, int n) {
+  Eigen::RowVectorXd r(n);
+  r(0) = 1.0;
+  if (n > 1) r(1) = x;
+  for (int m = 2; m < n; ++m) r(m) = 2.0 * x * r(m - 1) - r(m - 2);
+  return r;
+}
+
+// First and second derivatives (in t, x = 2t − 1) of T_m at the ends x = ±1: T_m'(±1) = (±1)^{m+1} m²,
+// T_m''(±1) = (±1)^m m²(m² − 1)/3.
+Eigen::RowVectorXd chebyshev_end_derivative(bool right, int n, int order) {
+  Eigen::RowVectorXd r(n);
+  for (int m = 0; m < n; ++m) {
+    const double m2 = static_cast<double>(m) * m;
+    const double sign = right ? 1.0 : ((m + order) % 2 == 0 ? 1.0 : -1.0);
+    r(m) = (order == 1 ? 2.0 * m2 : 4.0 * m2 * (m2 - 1.0) / 3.0) * sign;
+  }
+  return r;
+}
+
 }  // namespace
+
+void TraceSpace::end_derivatives(Index e, Index k, double t, int derivatives, CurveBasisValues& out) const {
+  // The edge's traces interpolated at the Chebyshev sample points (exact for traces of degree < kSamples).
+  const BoundaryEdge& b = edges_[static_cast<std::size_t>(e)];
+  const Eigen::VectorXd ts = sample_parameters();
+  BasisValues v;
+  space_->evaluate(b.element, side_points(space_->kind(b.element).shape, b.side, ts), 0, v);
+  Eigen::MatrixXd vander(kSamples, kSamples);
+  for (int j = 0; j < kSamples; ++j) vander.row(j) = chebyshev_row(2.0 * ts(j) - 1.0, kSamples);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(vander);
+  const auto first = static_cast<std::size_t>(dof_offsets_[static_cast<std::size_t>(e)]);
+  const bool right = t > 0.5;
+  for (Index i = 0; i < out.value.rows(); ++i) {
+    const Eigen::VectorXd c = lu.solve(v.value.row(local_rows_[first + static_cast<std::size_t>(i)]).transpose());
+    out.dt(i, k) = chebyshev_end_derivative(right, kSamples, 1).dot(c);
+    if (derivatives >= 2) out.dtt(i, k) = chebyshev_end_derivative(right, kSamples, 2).dot(c);
+  }
+}
 
 TraceSpace::TraceSpace(std::shared_ptr<const Space> space, std::vector<BoundaryEdge> edges)
     : space_(std::move(space)), edges_(std::move(edges)) {
@@ -211,6 +251,14 @@ void TraceSpace::evaluate(Index e, const Eigen::VectorXd& t, int derivatives, Cu
     if (derivatives >= 2) {
       out.dtt.row(i) = d.x() * d.x() * surface.duu.row(r) + 2.0 * d.x() * d.y() * surface.duv.row(r) +
                        d.y() * d.y() * surface.dvv.row(r);
+    }
+  }
+  // At an end of the edge the surface evaluator may give no derivatives (Catmull–Clark at an extraordinary
+  // vertex: the limit stencil only); there the one-sided derivatives come from the edge's interpolant.
+  if (derivatives >= 1 && nl > 0) {
+    for (Index k = 0; k < t.size(); ++k) {
+      const bool end = t(k) <= 1e-14 || t(k) >= 1.0 - 1e-14;
+      if (end && out.dt.col(k).cwiseAbs().maxCoeff() == 0.0) end_derivatives(e, k, t(k), derivatives, out);
     }
   }
 }

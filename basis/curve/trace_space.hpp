@@ -22,6 +22,9 @@ namespace iga::basis {
 /// a maximal independent set S of them is chosen by rank-revealing sparse QR of their Gram matrix at sample
 /// points (relative threshold 1e-10), every other one φ_j|Γ = Σ_s A_sj φ_s|Γ, and the trace functions are
 /// ψ_k = φ_{S_k}|Γ, S ascending. B-spline and Catmull–Clark traces are independent: A is empty.
+/// Derivatives are d/dt through side_tangent; at an end of an edge where the surface evaluator gives none (the
+/// Catmull–Clark limit stencil at an extraordinary vertex) they are those of the degree-9 interpolant of the
+/// edge's traces at Chebyshev points (exact for polynomial traces of degree <= 9, e.g. the cubic boundary curves).
 class TraceSpace : public CurveSpace {
  public:
   /// InputError for an empty edge list or an edge naming an element or side that does not exist;
@@ -46,6 +49,9 @@ class TraceSpace : public CurveSpace {
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& dependent() const { return dependent_; }
 
  private:
+  // t-derivatives of element e's functions at point k (t = 0 or 1) from the edge's interpolant at sample points.
+  void end_derivatives(Index e, Index k, double t, int derivatives, CurveBasisValues& out) const;
+
   std::shared_ptr<const Space> space_;
   std::vector<BoundaryEdge> edges_;
   std::vector<Index> surface_dofs_;

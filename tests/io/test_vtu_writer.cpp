@@ -1,5 +1,6 @@
 // Tests of io::write_vtu (read back with VTK's own reader) and io::write_json.
 #include <gtest/gtest.h>
+#include <vtkCell.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
@@ -24,6 +25,7 @@
 #include "core/error.hpp"
 #include "fem/function.hpp"
 #include "io/report.hpp"
+#include "io/sampled_writer.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace {
@@ -370,6 +372,81 @@ TEST(VtuWriter, BadArgumentsThrowInputError) {
   EXPECT_THROW(iga::io::write_vtu(path, geometry, Eigen::VectorXd::Zero(space->num_dofs()), {1, nullptr}),
                iga::InputError);
   EXPECT_FALSE(fs::exists(path));
+}
+
+TEST(VtuWriter, ElementFieldIsWrittenAtTheSamplePoints) {
+  // A field given point by point: u = x + 2y at the physical points, which must be the sample_points() of each
+  // element mapped (so the field sees the same points as the file's).
+  auto space = std::make_shared<BilinearSpace>(2, 1);
+  const basis::Geometry geometry(space, grid_points(2, 1, /*perturb=*/true));
+  TempDir tmp;
+  const std::string path = tmp.file("field.vtu");
+  Index calls = 0;
+  const iga::io::ElementField field = [&](Index e, const Eigen::Matrix2Xd& ref, const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) {
+    ++calls;
+    EXPECT_TRUE(ref.isApprox(iga::io::sample_points(basis::Shape::Quad, 3))) << e;
+    out = (x.row(0) + 2.0 * x.row(1)).transpose();
+  };
+  iga::io::write_vtu(path, geometry, field, {3, nullptr});
+  EXPECT_EQ(calls, 2);
+  auto grid = read_vtu(path);
+  ASSERT_EQ(grid->GetNumberOfPoints(), 2 * 9);
+  EXPECT_EQ(grid->GetPointData()->GetArray("grad_u"), nullptr);
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    double p[3];
+    grid->GetPoint(i, p);
+    EXPECT_NEAR(grid->GetPointData()->GetArray("u")->GetComponent(i, 0), p[0] + 2.0 * p[1], 1e-14);
+  }
+  const Eigen::Matrix2Xd tri = iga::io::sample_points(basis::Shape::Triangle, 4);
+  EXPECT_EQ(tri.cols(), 10);
+  EXPECT_THROW(iga::io::sample_points(basis::Shape::Quad, 1), iga::InputError);
+}
+
+TEST(SampledWriter, CurvesAreWrittenAsPolylines) {
+  iga::io::CurveData c;
+  c.points.resize(2, 5);
+  c.points << 0, 1, 2, 2, 3, 0, 0, 0, 1, 1;
+  c.offsets = {0, 3, 5};
+  c.point_scalars = {{"u", Eigen::VectorXd::LinSpaced(5, 0.0, 4.0)}};
+  c.point_vectors = {{"normal", Eigen::Matrix2Xd::Ones(2, 5)}};
+  c.cell_scalars = {{"element", Eigen::Vector2d(0.0, 1.0)}};
+  TempDir tmp;
+  const std::string path = tmp.file("curves.vtu");
+  iga::io::write_curves_vtu(path, c);
+  auto grid = read_vtu(path);
+  ASSERT_EQ(grid->GetNumberOfCells(), 2);
+  EXPECT_EQ(grid->GetCellType(0), VTK_POLY_LINE);
+  EXPECT_EQ(grid->GetCell(0)->GetNumberOfPoints(), 3);
+  EXPECT_EQ(grid->GetCell(1)->GetNumberOfPoints(), 2);
+  EXPECT_DOUBLE_EQ(grid->GetPointData()->GetArray("u")->GetComponent(4, 0), 4.0);
+  EXPECT_EQ(grid->GetPointData()->GetArray("normal")->GetNumberOfComponents(), 3);
+  EXPECT_DOUBLE_EQ(grid->GetCellData()->GetArray("element")->GetComponent(1, 0), 1.0);
+  c.offsets = {0, 4, 5};  // a one-point cell
+  EXPECT_THROW(iga::io::write_curves_vtu(path, c), iga::InputError);
+  c.offsets = {0, 3};  // not ending at the last point
+  EXPECT_THROW(iga::io::write_curves_vtu(path, c), iga::InputError);
+  EXPECT_THROW(iga::io::write_curves_vtu(tmp.file("no/such/dir/c.vtu"), iga::io::CurveData{}), iga::InputError);
+}
+
+TEST(SampledWriter, GridIsWrittenAsQuads) {
+  iga::io::GridData g;
+  g.nx = 3;
+  g.ny = 2;
+  g.points.resize(2, 6);
+  for (Index j = 0; j < 2; ++j) {
+    for (Index i = 0; i < 3; ++i) g.points.col(i + 3 * j) = Eigen::Vector2d(i, j);
+  }
+  g.point_scalars = {{"u", Eigen::VectorXd::Ones(6)}};
+  TempDir tmp;
+  const std::string path = tmp.file("grid.vtu");
+  iga::io::write_grid_vtu(path, g);
+  auto grid = read_vtu(path);
+  ASSERT_EQ(grid->GetNumberOfCells(), 2);
+  EXPECT_EQ(grid->GetCellType(1), VTK_QUAD);
+  g.point_scalars = {{"u", Eigen::VectorXd::Ones(5)}};
+  EXPECT_THROW(iga::io::write_grid_vtu(path, g), iga::InputError);
+  g.nx = 1;
+  EXPECT_THROW(iga::io::write_grid_vtu(path, g), iga::InputError);
 }
 
 TEST(WriteJson, RoundTrip) {

@@ -3,9 +3,11 @@
 #include <random>
 
 #include "basis/bspline/knot_vector.hpp"
-#include "refine/knot_insertion.hpp"
+#include "basis/bspline/spline_curve.hpp"
 
 namespace iga::refine::test {
+
+using basis::bspline::SplineCurve;
 
 /// Clamped knots on [0, L], `breaks` interior breakpoints of multiplicity 1..degree, control points in R^dim.
 inline SplineCurve random_curve(std::mt19937& rng, int degree, int breaks, int dim = 3) {
@@ -29,7 +31,7 @@ inline SplineCurve random_curve(std::mt19937& rng, int degree, int breaks, int d
   return c;
 }
 
-/// Cox–de Boor value of the curve at x (the library's KnotVector, independent of refine/).
+/// Cox–de Boor value of the curve at x through the library's KnotVector (clamped knots only).
 inline Eigen::VectorXd cox_de_boor(const SplineCurve& c, double x) {
   basis::bspline::KnotVector kv(c.degree, c.knots);
   const Index span = kv.span(x);

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
-#include "refine/knot_insertion.hpp"
+#include "basis/bspline/spline_curve.hpp"
 
 namespace {
 
@@ -51,12 +51,13 @@ TEST(IgaKnots, RoundTripMatchesTheLibrary) {
   const fs::path dir = fs::temp_directory_path() / ("iga_knots_rt_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::ofstream(dir / "in.json") << curve;
-  iga::refine::SplineCurve c;
+  iga::basis::bspline::SplineCurve c;
   c.degree = 3;
   c.knots = {0, 0, 0, 0, 1, 2, 2, 4, 4, 4, 4};
   c.control_points.resize(7, 2);
   c.control_points << 0, 0, 1, 2, 2, 3, 4, 3, 5, 1, 6, 0, 7, 1;
-  const iga::refine::SplineCurve ref = iga::refine::insert_knots_boehm(c, {0.5, 3.0});  // intervals 0 and 2
+  // Intervals 0 and 2.
+  const iga::basis::bspline::SplineCurve ref = iga::basis::bspline::insert_knots_boehm(c, {0.5, 3.0});
   for (const char* algorithm : {"boehm", "oslo", "refine-smooth"}) {
     const ProgramRun r = run_program((dir / "in.json").string() + " --intervals 0,2 --algorithm " + algorithm + " --out " +
                       (dir / "out.json").string());

@@ -15,6 +15,7 @@
 
 using namespace iga;
 using namespace iga::refine;
+using iga::basis::bspline::SplineCurve;
 using iga::refine::test::cox_de_boor;
 using iga::refine::test::knots_diff;
 using iga::refine::test::random_curve;

@@ -1,43 +1,17 @@
-#include "refine/knot_insertion.hpp"
+#include "basis/bspline/spline_curve.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "basis/bspline/knot_insertion.hpp"
 #include "basis/bspline/knot_vector.hpp"
 #include "core/error.hpp"
 
-namespace iga::refine {
+namespace iga::basis::bspline {
 namespace {
 
-std::string num(double x) {
-  std::string s = std::to_string(x);
-  return s;
-}
-
-// The non-empty interval [t_mu, t_{mu+1}] inside the domain containing x (t_mu <= x < t_{mu+1}, or the last
-// one for x at the domain end).
-Index find_span(const SplineCurve& c, double x) {
-  const std::vector<Index> spans = domain_intervals(c);
-  const auto& t = c.knots;
-  for (Index mu : spans) {
-    if (x < t[static_cast<std::size_t>(mu) + 1]) return mu;
-  }
-  return spans.back();
-}
-
-// Blossom of the polynomial piece on [t_mu, t_{mu+1}] at args[0..p-1] (de Boor's triangle with a different
-// argument per level).
-}  // namespace
-
-Eigen::RowVectorXd blossom(const SplineCurve& c, Index mu, const double* args) {
-  // The one blossom of the univariate model (basis/bspline/knot_vector.hpp), on the piece's knot window.
-  const int p = c.degree;
-  const Eigen::VectorXd row = basis::bspline::blossom_row(c.knots.data() + (mu - p), p, args);
-  return row.transpose() * c.control_points.middleRows(mu - p, p + 1);
-}
-
-namespace {
+std::string num(double x) { return std::to_string(x); }
 
 void check_inside(const SplineCurve& c, double x) {
   if (!std::isfinite(x) || x < c.domain_begin() || x > c.domain_end()) {
@@ -103,14 +77,7 @@ void validate(const SplineCurve& c) {
   if (!(c.domain_begin() < c.domain_end())) throw InputError("the domain [t_degree, t_n] is empty");
 }
 
-std::vector<Index> domain_intervals(const SplineCurve& c) {
-  std::vector<Index> spans;
-  const Index n = c.num_control_points();
-  for (Index mu = c.degree; mu < n; ++mu) {
-    if (c.knots[static_cast<std::size_t>(mu)] < c.knots[static_cast<std::size_t>(mu) + 1]) spans.push_back(mu);
-  }
-  return spans;
-}
+std::vector<Index> domain_intervals(const SplineCurve& c) { return domain_intervals(c.degree, c.knots); }
 
 std::vector<double> interval_midpoints(const SplineCurve& c, const std::vector<Index>& intervals) {
   const std::vector<Index> spans = domain_intervals(c);
@@ -138,7 +105,7 @@ SplineCurve insert_knot_boehm(const SplineCurve& c, double x) {
   check_multiplicities(c, {x});
   const int p = c.degree;
   const Index n = c.num_control_points();
-  const Index k = find_span(c, x);
+  const Index k = find_span(c.degree, c.knots, x);
   const auto& t = c.knots;
   SplineCurve out;
   out.degree = p;
@@ -168,8 +135,8 @@ SplineCurve insert_knots_boehm(const SplineCurve& c, const std::vector<double>& 
   const auto& t = c.knots;
   const Index n = c.num_control_points();  // control points 0..n-1, knots 0..n+p
   const Index r = static_cast<Index>(xs.size());
-  const Index a = find_span(c, xs.front());
-  const Index b = find_span(c, xs.back()) + 1;
+  const Index a = find_span(c.degree, c.knots, xs.front());
+  const Index b = find_span(c.degree, c.knots, xs.back()) + 1;
   SplineCurve out;
   out.degree = p;
   out.knots.assign(static_cast<std::size_t>(n + p + 1 + r), 0.0);
@@ -217,35 +184,23 @@ SplineCurve insert_knots_oslo(const SplineCurve& c, const std::vector<double>& x
   out.knots = c.knots;
   out.knots.insert(out.knots.end(), xs.begin(), xs.end());
   std::sort(out.knots.begin(), out.knots.end());
-  const auto& tau = out.knots;
-  const Index nf = static_cast<Index>(tau.size()) - p - 1;
-  out.control_points.resize(nf, c.control_points.cols());
-  const std::vector<Index> spans = domain_intervals(c);
-  std::size_t s = 0;  // the coarse piece, advanced monotonically
-  for (Index j = 0; j < nf; ++j) {
-    // The non-empty fine interval inside the domain and the support of the fine B-spline j nearest to the
-    // middle of its arguments (least extrapolation in the blossom); its coarse piece.
-    const Index l_begin = std::max<Index>(j, p), l_end = std::min<Index>(j + p, nf - 1);
-    const Index centre = j + p / 2;
-    Index l = -1;
-    for (Index cand = l_begin; cand <= l_end; ++cand) {
-      if (tau[static_cast<std::size_t>(cand)] < tau[static_cast<std::size_t>(cand) + 1] &&
-          (l < 0 || std::abs(cand - centre) < std::abs(l - centre))) {
-        l = cand;
-      }
-    }
-    if (l < 0) l = l_begin;
-    const double mid = 0.5 * (tau[static_cast<std::size_t>(l)] + tau[static_cast<std::size_t>(l) + 1]);
-    while (s > 0 && mid < c.knots[static_cast<std::size_t>(spans[s])]) --s;
-    while (s + 1 < spans.size() && mid >= c.knots[static_cast<std::size_t>(spans[s]) + 1]) ++s;
-    out.control_points.row(j) = blossom(c, spans[s], &tau[static_cast<std::size_t>(j) + 1]);
-  }
+  out.control_points.resize(static_cast<Index>(out.knots.size()) - p - 1, c.control_points.cols());
+  oslo_rows(p, c.knots, out.knots, [&](Index j, Index first, const Eigen::VectorXd& row) {
+    out.control_points.row(j) = row.transpose() * c.control_points.middleRows(first, p + 1);
+  });
   return out;
 }
 
-Eigen::VectorXd evaluate(const SplineCurve& c, double x) {
-  std::vector<double> args(static_cast<std::size_t>(c.degree), x);
-  return blossom(c, find_span(c, x), args.data()).transpose();
+Eigen::RowVectorXd blossom(const SplineCurve& c, Index mu, const double* args) {
+  const int p = c.degree;
+  return blossom_row(c.knots.data() + (mu - p), p, args).transpose() * c.control_points.middleRows(mu - p, p + 1);
 }
 
-}  // namespace iga::refine
+Eigen::VectorXd evaluate(const SplineCurve& c, double x) {
+  const int p = c.degree;
+  const Index mu = find_span(c.degree, c.knots, x);
+  const Eigen::MatrixXd n = basis_functions(c.knots.data() + (mu - p), p, x, 0);
+  return (n.row(0) * c.control_points.middleRows(mu - p, p + 1)).transpose();
+}
+
+}  // namespace iga::basis::bspline

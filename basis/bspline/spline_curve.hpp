@@ -1,13 +1,15 @@
 #pragma once
-// Knot insertion on B-spline curves with control points of any dimension (thesis §2.3.1): Boehm's
-// single-knot insertion and the Oslo algorithm (blossoms at the new knots). These are the references for
-// the refine-and-smooth algorithm (refine_smooth.hpp).
+// B-spline curves with control points of any dimension on knots that need not be clamped, and knot insertion
+// on them (thesis §2.3.1): Boehm's single-knot insertion and the Oslo algorithm (the rows of
+// knot_insertion.hpp). The same univariate model as KnotVector (knot_vector.hpp): curve points and blossoms
+// are basis_functions and blossom_row on a knot window. These are the references for the refine-and-smooth
+// algorithm (refine/refine_smooth.hpp).
 #include <Eigen/Core>
 #include <vector>
 
 #include "core/types.hpp"
 
-namespace iga::refine {
+namespace iga::basis::bspline {
 
 /// A B-spline curve in the standard convention: knots t_0 <= ... <= t_{m-1}, n = m - degree - 1 control
 /// points (rows of control_points, any number of columns), domain [t_degree, t_n]. The knots need not be
@@ -27,7 +29,8 @@ struct SplineCurve {
 /// non-empty domain.
 void validate(const SplineCurve& curve);
 
-/// The indices mu (t_mu < t_{mu+1}) of the non-empty knot intervals inside the domain, in order.
+/// The indices mu (t_mu < t_{mu+1}) of the non-empty knot intervals inside the domain, in order
+/// (domain_intervals of the knots).
 std::vector<Index> domain_intervals(const SplineCurve& curve);
 
 /// Midpoints of the chosen non-empty domain intervals (0-based positions in domain_intervals(); empty = all).
@@ -42,14 +45,16 @@ std::vector<double> interval_midpoints(const SplineCurve& curve, const std::vect
 SplineCurve insert_knot_boehm(const SplineCurve& curve, double x);
 /// Boehm applied knot by knot.
 SplineCurve insert_knots_boehm(const SplineCurve& curve, const std::vector<double>& xs);
-/// Oslo: all knots xs at once; every new control point is the blossom of the coarse piece at its knots.
+/// Oslo: all knots xs at once; every new control point is the blossom of a coarse piece at its knots
+/// (oslo_rows, knot_insertion.hpp).
 SplineCurve insert_knots_oslo(const SplineCurve& curve, const std::vector<double>& xs);
 
 /// The blossom (polar form) of the polynomial piece on the non-empty interval [t_mu, t_{mu+1}] at
-/// args[0..degree-1], by de Boor's triangle with one argument per level.
+/// args[0..degree-1] (blossom_row on the piece's knot window).
 Eigen::RowVectorXd blossom(const SplineCurve& curve, Index mu, const double* args);
 
-/// Curve point at x by the Cox–de Boor / de Boor recursion (for tests and the program).
+/// Curve point at x (in the domain; outside it, the first or last piece extended) by the Cox–de Boor
+/// recursion (basis_functions on the knot window of the interval containing x).
 Eigen::VectorXd evaluate(const SplineCurve& curve, double x);
 
-}  // namespace iga::refine
+}  // namespace iga::basis::bspline

