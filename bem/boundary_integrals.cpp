@@ -48,7 +48,9 @@ bool BoundaryIntegrator::integrate(const Eigen::Vector2d& p, Index on_curve_elem
     const ElementCache& c = cache_[static_cast<std::size_t>(e)];
     const BemElement& el = d_.element(e);
     const std::span<const Index> dofs = d_.space().dofs(e);
-    const bool same = el.curve_element == on_curve_element;
+    // P on this very piece (its parameter inside [a, b]); other pieces of P's curve element are near or far
+    // by distance like any other.
+    const bool same = el.curve_element == on_curve_element && curve_t >= el.a - 1e-14 && curve_t <= el.b + 1e-14;
     if (!same && admissible(c.xa, c.xm, c.xb, c.length, p, options_.admissibility)) {
       // Far field: the kernels at the cached nodes, then (local dofs × nodes) times them.
       const Index q = c.ws.size();

@@ -2,7 +2,10 @@
 // u inside the domain from the boundary solution (thesis (4.50)):
 //   u(P) = Σ_j q_j ∫_Γ φ_j v dΓ − Σ_j u_j ∫_Γ φ_j ∂v/∂n dΓ,
 // with the same quadrature as the collocation matrices: points close to the boundary are handled by adaptive
-// subdivision of the near elements (accurate to ~1e-12 relative down to distances of ~1e-13 of the diameter).
+// subdivision of the near elements. The quadrature error is ~1e-13 down to distances δ ~ 1e-5 of the
+// diameter and grows like 1e-18/δ below (the node parameters carry an absolute rounding of ~1e-16: measured
+// 3e-13 at δ = 1e-6, 6e-10 at δ = 1e-10, test_bem_quadrature); the discretisation error of u_h near Γ is that
+// of u_h on Γ (test_bem_solve).
 #include <Eigen/Core>
 
 #include "bem/boundary_discretization.hpp"

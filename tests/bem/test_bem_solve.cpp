@@ -104,6 +104,15 @@ TEST(BemSolve, SmoothLoopDirichletConvergence) {
   }
 }
 
+// Degree 1 (collocation at the knots, i.e. on element joints): rate 2 (measured 2.0).
+TEST(BemSolve, SmoothLoopLinear) {
+  const auto loop = tb::smooth_loop();
+  std::vector<int> cond = all(loop, bem::kDirichlet);
+  for (std::size_t k = 0; k < 5; ++k) cond[k] = bem::kNeumann;
+  EXPECT_GE(flux_rate("loop-dirichlet-p1", loop, all(loop, bem::kDirichlet), 1, 2, 5, tb::re_power(2)), 1.7);
+  EXPECT_GE(flux_rate("loop-mixed-p1", loop, cond, 1, 2, 5, tb::re_power(2)), 1.7);
+}
+
 // Mixed: half of the loop Dirichlet, half Neumann (two open segments). Measured: rates 3.0 (p = 2), 4.0 (p = 3).
 TEST(BemSolve, SmoothLoopMixedConvergence) {
   const auto loop = tb::smooth_loop();
@@ -149,12 +158,35 @@ TEST(BemSolve, SquaresMixedConvergence) {
   EXPECT_LT(solve_case(hole, hole_mixed, 2, 1, tb::re_power(2)).flux_error, 1e-12);
 }
 
+// Collocation at the maxima of the B-splines: the same rates as Greville (measured on the hole, mixed,
+// e^x cos y, refine 2..5: p = 2: 2.65, p = 3: 3.76).
+TEST(BemSolve, MaximaCollocationConverges) {
+  const auto hole = tb::square_with_hole();
+  const std::vector<int> cond{0, 0, 1, 1, 1, 0, 1, 0};
+  const auto u = tb::exp_cos();
+  for (int p : {2, 3}) {
+    std::vector<double> e;
+    for (int r = 2; r <= 5; ++r) {
+      bem::DiscretizationOptions o;
+      o.degree = p;
+      o.refine = r;
+      o.collocation = bem::Collocation::Maxima;
+      const bem::BoundaryDiscretization d(hole, cond, o);
+      const bem::Solution s = bem::solve(d, problem_for(u));
+      e.push_back(bem::flux_l2_error(d, s, *u) / bem::flux_l2_norm(d, *u));
+      std::printf("hole-maxima p %d refine %d flux %.3e\n", p, r, e.back());
+    }
+    std::printf("  rate %.2f\n", iga::test::fitted_rate(e));
+    EXPECT_GE(iga::test::fitted_rate(e), p == 2 ? 2.35 : 3.6) << "p " << p;
+  }
+}
+
 // Harmonic polynomials of degree <= p restricted to straight edges are polynomials of degree <= p (u) and
 // <= p − 1 (q) in the edge parameter, so the BEM space holds them exactly: every coefficient is reproduced.
 TEST(BemSolve, PatchTestOnTheSquare) {
   const auto sq = tb::square(-0.3, 0.9);
   const std::vector<std::vector<int>> conditions{{0, 0, 0, 0}, {1, 1, 1, 1}, {0, 1, 1, 0}};
-  for (int p : {2, 3, 4}) {
+  for (int p : {1, 2, 3, 4}) {
     std::vector<std::shared_ptr<iga::fem::Function>> us{iga::fem::constant_function(1.0)};
     for (int k = 1; k <= p; ++k) {
       us.push_back(tb::re_power(k));
@@ -229,7 +261,8 @@ TEST(BemSolve, LuAndGmresAgreeAndConditionEstimates) {
   // to it (its Krylov space is the whole space after n = 56 products).
   EXPECT_GT(a.condition_estimate, k1 / 10);
   EXPECT_LT(a.condition_estimate, k1 * 10);
-  EXPECT_LE(c.condition_estimate, k2 * (1 + 1e-6));  // a lower bound (gmres.hpp)
+  // A lower bound (gmres.hpp), here equal up to the loss of orthogonality of modified Gram–Schmidt.
+  EXPECT_LE(c.condition_estimate, k2 * (1 + 1e-4)) << c.condition_estimate / k2 - 1;
   EXPECT_GT(c.condition_estimate, k2 / 10);
   EXPECT_EQ(a.collocation_points, d.num_dofs());
   EXPECT_NEAR(a.scale, 0.5 / hole.diameter(), 1e-15);
