@@ -87,7 +87,7 @@ void BoundaryDiscretization::build_segments(const std::vector<int>& condition) {
     std::vector<std::size_t> cuts;  // positions k: a segment ends after els[k]
     for (std::size_t k = 0; k < m; ++k) {
       const Index e = els[k], f = els[(k + 1) % m];
-      if (curve_.corner_at_end(e, options_.corner_tolerance) ||
+      if (options_.joints == Joints::Split || curve_.corner_at_end(e, options_.corner_tolerance) ||
           condition[static_cast<std::size_t>(e)] != condition[static_cast<std::size_t>(f)]) {
         cuts.push_back(k);
       }

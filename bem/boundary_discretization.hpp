@@ -8,6 +8,10 @@
 // element). Every curve element is split into 2^refine BEM elements of equal parameter length. u and q both
 // live in SplineCurveSpace(degree, segments): C^{p−1} inside a segment, discontinuous between segments (at
 // corners and condition changes both u and q have one dof on each side: discontinuous collocation).
+// With Joints::Split every joint between curve elements is a segment end as well. That is for curves that are
+// less smooth at their joints than the BEM splines (C^{p−1}): the trace of a Catmull–Clark or cubic B-spline
+// geometry is C² at its joints, so its normal, and with it q = ∇u·n, is only C¹ there, and C² splines of degree
+// p = 3 approximate q at the rate 2.5 instead of 4; split, every curve element carries polynomials of degree p.
 //
 // Collocation: one point per dof, at its Greville abscissa (Collocation::Greville) or at the maximum of its
 // B-spline (Collocation::Maxima) in the segment parameter. On an open segment the first and the last point
@@ -30,6 +34,9 @@
 namespace iga::bem {
 
 enum class Collocation { Greville, Maxima };
+/// Smoothness of the BEM splines across the joints of curve elements that are neither corners nor condition
+/// changes: C^{p−1} (Smooth, the isogeometric choice) or none (Split: segments end there too).
+enum class Joints { Smooth, Split };
 
 /// Boundary condition of a curve element (and of the dofs of its segment).
 inline constexpr int kDirichlet = 0;
@@ -40,6 +47,7 @@ struct DiscretizationOptions {
   int refine = 0;  ///< each curve element is split into 2^refine BEM elements
   Collocation collocation = Collocation::Greville;
   double corner_tolerance = 1e-8;  ///< radians
+  Joints joints = Joints::Smooth;
 };
 
 /// A BEM element: the parameter sub-interval [a, b] ⊂ [0, 1] of one curve element.

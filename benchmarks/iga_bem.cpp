@@ -33,7 +33,7 @@ using namespace iga;
 
 struct Options {
   std::string mesh, basis = "bspline", geometry, dirichlet, neumann, neumann_boundary, neumann_where, exact;
-  std::string collocation = "greville", solver = "auto", vtu = "bem.vtu", boundary_vtu = "bem_boundary.vtu";
+  std::string collocation = "greville", joints = "smooth", solver = "auto", vtu = "bem.vtu", boundary_vtu = "bem_boundary.vtu";
   std::string json = "bem.json";
   int degree = 2, refine = 2, geometry_refine = -1, grid = 0, samples = 4, threads = 0;
   bool compare_fem = false, quiet = false;
@@ -276,6 +276,7 @@ int run(const Options& o) {
   dopt.degree = o.degree;
   dopt.refine = o.refine;
   dopt.collocation = o.collocation == "maxima" ? bem::Collocation::Maxima : bem::Collocation::Greville;
+  dopt.joints = o.joints == "split" ? bem::Joints::Split : bem::Joints::Smooth;
   const bem::BoundaryDiscretization d(trace.curve, conditions(*trace.space, split), dopt);
   log("BEM on " + std::to_string(d.num_dofs()) + " dofs, " + std::to_string(d.num_elements()) + " elements on " +
       std::to_string(trace.curve.loops().size()) + " boundary loop(s), " + std::to_string(d.segments().size()) +
@@ -294,6 +295,7 @@ int run(const Options& o) {
   j["degree"] = o.degree;
   j["refine"] = o.refine;
   j["collocation"] = o.collocation;
+  j["joints"] = o.joints;
   j["problem"] = {{"dirichlet", o.dirichlet}, {"neumann", o.neumann}, {"neumann_boundary", o.neumann_boundary},
                   {"neumann_where", o.neumann_where}, {"exact", exact_text},
                   {"exact_is_default", o.exact.empty() && !exact_text.empty()}};
@@ -394,6 +396,7 @@ int main(int argc, char** argv) {
   app.add_option("--degree", o.degree, "degree p of the splines for u and q on the boundary")->check(CLI::Range(1, 8))->capture_default_str();
   app.add_option("--refine", o.refine, "each boundary curve element is split into 2^K BEM elements")->check(CLI::Range(0, 16))->capture_default_str();
   app.add_option("--collocation", o.collocation, "greville or maxima (of the B-splines)")->check(CLI::IsMember({"greville", "maxima"}))->capture_default_str();
+  app.add_option("--joints", o.joints, "BEM splines across the joints of the boundary curve's elements: smooth (C^(p-1)) or split (discontinuous: full order on curves that are only C2 there, e.g. Catmull–Clark and cubic B-spline boundaries)")->check(CLI::IsMember({"smooth", "split"}))->capture_default_str();
   app.add_option("--solver", o.solver, "auto (LU up to 4000 unknowns, else GMRES), lu or gmres")->check(CLI::IsMember({"auto", "lu", "gmres"}))->capture_default_str();
   app.add_option("--exact", o.exact, "exact (harmonic) solution u(x,y): default Dirichlet data and errors; default exp(x)*cos(y) when no data are given");
   app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact");
