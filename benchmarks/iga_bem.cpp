@@ -35,31 +35,12 @@ struct Options {
   std::string mesh, basis = "bspline", geometry, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string collocation = "greville", joints = "smooth", solver = "auto", vtu = "bem.vtu", boundary_vtu = "bem_boundary.vtu";
   std::string json = "bem.json";
+  double gmres_tolerance = 1e-12;
   int degree = 2, refine = 2, geometry_refine = -1, grid = 0, samples = 4, threads = 0;
   bool compare_fem = false, quiet = false;
   std::vector<std::string> given;
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
-
-std::vector<int> parse_parts(const std::string& list, const std::vector<std::string>& names) {
-  std::vector<int> parts;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (item.empty()) continue;
-    int found = -1;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      if (names[i] == item || std::to_string(i) == item) found = static_cast<int>(i);
-    }
-    if (found < 0) {
-      std::string known;
-      for (std::size_t i = 0; i < names.size(); ++i) known += (i ? ", " : "") + names[i];
-      throw InputError("--neumann-boundary: no boundary part '" + item + "' (parts: " + known + ", or their indices)");
-    }
-    parts.push_back(found);
-  }
-  return parts;
-}
 
 // The data as a PoissonProblem (f = 0), so that the boundary split and the FEM comparison are iga-poisson's.
 fem::PoissonProblem make_problem(const Options& o, const std::vector<std::string>& names, std::string& exact_text) {
@@ -71,17 +52,7 @@ fem::PoissonProblem make_problem(const Options& o, const std::vector<std::string
     p.dirichlet = p.exact;
   }
   if (!o.dirichlet.empty()) p.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
-  if (!o.neumann.empty()) {
-    p.neumann = std::make_shared<fem::Expression>(o.neumann, "--neumann", true);
-    if (o.neumann_boundary.empty() && o.neumann_where.empty()) {
-      throw InputError("--neumann needs --neumann-boundary or --neumann-where to say where");
-    }
-  } else if (!o.neumann_boundary.empty() || !o.neumann_where.empty()) {
-    if (!p.exact) throw InputError("--neumann-boundary/--neumann-where need --neumann data (or an exact solution)");
-    p.neumann = fem::normal_flux(p.exact);
-  }
-  p.neumann_parts = parse_parts(o.neumann_boundary, names);
-  if (!o.neumann_where.empty()) p.neumann_where = std::make_shared<fem::Expression>(o.neumann_where, "--neumann-where");
+  fem::select_neumann(p, o.neumann, o.neumann_boundary, o.neumann_where, names);
   return p;
 }
 
@@ -283,6 +254,7 @@ int run(const Options& o) {
       " segment(s); " + std::to_string(fem::num_threads()) + " threads");
   bem::SolveOptions so;
   so.solver = parse_solver(o.solver);
+  so.gmres_tolerance = o.gmres_tolerance;
   const bem::Solution s = bem::solve(d, bem::Problem{problem.dirichlet, problem.neumann, problem.exact}, so);
   log("assembly " + fmt(s.assembly_seconds) + " s, solve " + fmt(s.solve_seconds) + " s (" + s.solver +
       "), condition estimate " + fmt(s.condition_estimate));
@@ -313,6 +285,7 @@ int run(const Options& o) {
   j["solve_seconds"] = s.solve_seconds;
   j["solver"] = s.solver;
   j["gmres_iterations"] = s.gmres_iterations;
+  j["gmres_tolerance"] = o.gmres_tolerance;
   j["condition_estimate"] = s.condition_estimate;
   j["flux_l2_error"] = nullptr;
   j["u_l2_error"] = nullptr;
@@ -398,6 +371,7 @@ int main(int argc, char** argv) {
   app.add_option("--collocation", o.collocation, "greville or maxima (of the B-splines)")->check(CLI::IsMember({"greville", "maxima"}))->capture_default_str();
   app.add_option("--joints", o.joints, "BEM splines across the joints of the boundary curve's elements: smooth (C^(p-1)) or split (discontinuous: full order on curves that are only C2 there, e.g. Catmull–Clark and cubic B-spline boundaries)")->check(CLI::IsMember({"smooth", "split"}))->capture_default_str();
   app.add_option("--solver", o.solver, "auto (LU up to 4000 unknowns, else GMRES), lu or gmres")->check(CLI::IsMember({"auto", "lu", "gmres"}))->capture_default_str();
+  app.add_option("--gmres-tolerance", o.gmres_tolerance, "GMRES: relative residual to reach (beyond ~1000 dofs 1e-12 can leave an error above the discretisation error; 1e-14 is reachable)")->check(CLI::Range(1e-16, 1e-2))->capture_default_str();
   app.add_option("--exact", o.exact, "exact (harmonic) solution u(x,y): default Dirichlet data and errors; default exp(x)*cos(y) when no data are given");
   app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact");
   app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)");

@@ -39,26 +39,6 @@ struct Options {
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
 
-std::vector<int> parse_parts(const std::string& list, const std::vector<std::string>& names) {
-  std::vector<int> parts;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (item.empty()) continue;
-    int found = -1;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      if (names[i] == item || std::to_string(i) == item) found = static_cast<int>(i);
-    }
-    if (found < 0) {
-      std::string known;
-      for (std::size_t i = 0; i < names.size(); ++i) known += (i ? ", " : "") + names[i];
-      throw iga::InputError("--neumann-boundary: no boundary part '" + item + "' (parts: " + known + ", or their indices)");
-    }
-    parts.push_back(found);
-  }
-  return parts;
-}
-
 std::vector<iga::Index> parse_intervals(const std::string& list) {
   std::vector<iga::Index> intervals;
   std::stringstream ss(list);
@@ -128,20 +108,7 @@ int run(const Options& o) {
     if (o.dirichlet.empty()) problem.dirichlet = problem.exact;
   }
   if (!o.dirichlet.empty()) problem.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
-  if (!o.neumann.empty()) {
-    problem.neumann = std::make_shared<fem::Expression>(o.neumann, "--neumann", true);
-    problem.neumann_parts = parse_parts(o.neumann_boundary, names);
-    if (problem.neumann_parts.empty() && o.neumann_where.empty()) {
-      throw InputError("--neumann needs --neumann-boundary or --neumann-where to say where");
-    }
-  } else if (!o.neumann_boundary.empty() || !o.neumann_where.empty()) {
-    if (!problem.exact) throw InputError("--neumann-boundary/--neumann-where need --neumann data (or an exact solution)");
-    problem.neumann = fem::normal_flux(problem.exact);
-    problem.neumann_parts = parse_parts(o.neumann_boundary, names);
-  }
-  if (!o.neumann_where.empty()) {
-    problem.neumann_where = std::make_shared<fem::Expression>(o.neumann_where, "--neumann-where");
-  }
+  fem::select_neumann(problem, o.neumann, o.neumann_boundary, o.neumann_where, names);
   problem.mean_zero = o.mean_zero;
   const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? backend.default_quadrature(degree) : o.quadrature, degree + 1);
   const fem::SolverOptions solver{fem::parse_solver(o.solver)};

@@ -54,6 +54,13 @@ struct BoundarySplit {
 };
 BoundarySplit split_boundary(const basis::Geometry& geometry, const PoissonProblem& problem);
 
+/// The programs' Neumann selection (--neumann EXPR, --neumann-boundary PARTS, --neumann-where EXPR; empty = not
+/// given) into problem: the data (the expression, else the normal flux of problem.exact), the parts (names in
+/// `names` or their indices, comma-separated) and the geometric selector. InputError naming the option for an
+/// unknown part, Neumann data without a place, or a place without data or an exact solution.
+void select_neumann(PoissonProblem& problem, const std::string& neumann, const std::string& boundary,
+                    const std::string& where, const std::vector<std::string>& names);
+
 /// The pipeline in steps (deal.II step-6's setup_system / assemble_system / solve, DESIGN item 5), for loops
 /// that need the pieces: setup() → assemble() → solve() → errors(), each once and in this order (a step
 /// called out of order runs the missing ones first). The solver keeps references to geometry and rules (they must

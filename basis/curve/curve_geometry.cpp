@@ -30,6 +30,19 @@ struct Gauss5 {
   }
 };
 
+// Gauss5 on 8 equal pieces of [0, 1]: nodes t, weights w.
+struct CompositeGauss {
+  static constexpr int kPieces = 8;
+  Eigen::VectorXd t, w;
+  CompositeGauss() : t(5 * kPieces), w(5 * kPieces) {
+    const Gauss5 g;
+    for (int p = 0; p < kPieces; ++p) {
+      t.segment<5>(5 * p) = (g.x.array() + p) / kPieces;
+      w.segment<5>(5 * p) = g.w / kPieces;
+    }
+  }
+};
+
 std::string element_name(Index e) { return "curve element " + std::to_string(e); }
 
 }  // namespace
@@ -156,26 +169,18 @@ bool CurveGeometry::corner_at_end(Index e, double tolerance) const {
 }
 
 double CurveGeometry::length(Index e) const {
-  static const Gauss5 g;
-  constexpr int kPieces = 8;
-  Eigen::VectorXd t(5 * kPieces), w(5 * kPieces);
-  for (int p = 0; p < kPieces; ++p) {
-    t.segment<5>(5 * p) = (g.x.array() + p) / kPieces;
-    w.segment<5>(5 * p) = g.w / kPieces;
-  }
+  static const CompositeGauss rule;
+  const Eigen::VectorXd& t = rule.t;
+  const Eigen::VectorXd& w = rule.w;
   CurvePoints pts;
   evaluate(e, t, pts);
   return w.dot(pts.speed);
 }
 
 double CurveGeometry::signed_area() const {
-  static const Gauss5 g;
-  constexpr int kPieces = 8;
-  Eigen::VectorXd t(5 * kPieces), w(5 * kPieces);
-  for (int p = 0; p < kPieces; ++p) {
-    t.segment<5>(5 * p) = (g.x.array() + p) / kPieces;
-    w.segment<5>(5 * p) = g.w / kPieces;
-  }
+  static const CompositeGauss rule;
+  const Eigen::VectorXd& t = rule.t;
+  const Eigen::VectorXd& w = rule.w;
   // Relative to a point of the curve, so that far-away domains do not lose digits.
   const Eigen::Vector2d origin = point(loops_.front().elements.front(), 0.0);
   double area = 0.0;

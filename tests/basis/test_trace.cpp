@@ -81,6 +81,22 @@ void check_restriction(const Geometry& g, const std::string& what) {
   EXPECT_LT(worst, 1e-13) << what;
 }
 
+// The unit square's boundary: four corners of angle π/2 (to angle_tol), perimeter 4 and area 1 (to tol).
+void expect_unit_square(const CurveGeometry& c, double angle_tol, double tol) {
+  int corners = 0;
+  double perimeter = 0.0;
+  for (Index e = 0; e < c.num_elements(); ++e) {
+    perimeter += c.length(e);
+    if (c.corner_at_end(e)) {
+      ++corners;
+      EXPECT_NEAR(c.interior_angle(e), std::numbers::pi / 2, angle_tol);
+    }
+  }
+  EXPECT_EQ(corners, 4);
+  EXPECT_NEAR(perimeter, 4.0, tol);
+  EXPECT_NEAR(c.signed_area(), 1.0, tol);
+}
+
 // Uniform knot vector helper: clamped, degree p, interior knots given.
 basis::bspline::KnotVector knots(int p, std::vector<double> interior) {
   std::vector<double> k(static_cast<std::size_t>(p + 1), 0.0);
@@ -141,18 +157,7 @@ TEST(Trace, BsplineSideIsTheUnivariateBasisOfItsKnots) {
   // One closed loop with four right-angle corners; perimeter 4, area 1.
   ASSERT_EQ(tr.curve.loops().size(), 1u);
   EXPECT_TRUE(tr.curve.loops()[0].closed);
-  int corners = 0;
-  double perimeter = 0.0;
-  for (Index e = 0; e < trace.num_elements(); ++e) {
-    perimeter += tr.curve.length(e);
-    if (tr.curve.corner_at_end(e)) {
-      ++corners;
-      EXPECT_NEAR(tr.curve.interior_angle(e), std::numbers::pi / 2, 1e-12);
-    }
-  }
-  EXPECT_EQ(corners, 4);
-  EXPECT_NEAR(perimeter, 4.0, 1e-13);
-  EXPECT_NEAR(tr.curve.signed_area(), 1.0, 1e-13);
+  expect_unit_square(tr.curve, 1e-12, 1e-13);
 }
 
 TEST(Trace, CatmullClarkBoundaryIsTheCubicBsplineOfTheBoundaryPolygon) {
@@ -213,18 +218,7 @@ TEST(Trace, CatmullClarkSquareHasStraightSidesAndRightAngles) {
   // so the limit boundary is the square itself: perimeter 4, area 1, four corners of angle π/2.
   const Geometry g = registry_geometry("cc", data_mesh("square_evs.obj"));
   const basis::BoundaryTrace tr = basis::trace_geometry(g);
-  double perimeter = 0.0;
-  int corners = 0;
-  for (Index e = 0; e < tr.curve.num_elements(); ++e) {
-    perimeter += tr.curve.length(e);
-    if (tr.curve.corner_at_end(e)) {
-      ++corners;
-      EXPECT_NEAR(tr.curve.interior_angle(e), std::numbers::pi / 2, 1e-10);
-    }
-  }
-  EXPECT_EQ(corners, 4);
-  EXPECT_NEAR(perimeter, 4.0, 1e-12);
-  EXPECT_NEAR(tr.curve.signed_area(), 1.0, 1e-12);
+  expect_unit_square(tr.curve, 1e-10, 1e-12);
 }
 
 TEST(Trace, RestrictionMapsSurfaceFunctionsToTheirTraces) {
