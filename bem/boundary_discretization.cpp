@@ -77,10 +77,25 @@ BoundaryDiscretization::BoundaryDiscretization(const basis::CurveGeometry& curve
 void BoundaryDiscretization::build_segments(const std::vector<int>& condition) {
   const Index split = Index{1} << options_.refine;
   const int p = options_.degree;
-  for (const basis::CurveLoop& loop : curve_.loops()) {
+  const double d2 = curve_.diameter() * curve_.diameter();
+  if (!(curve_.signed_area() > 0.0)) {
+    throw InputError("boundary discretization: the boundary encloses a signed area of " +
+                     std::to_string(curve_.signed_area()) +
+                     ": the domain must lie to the left of the curve (outer loops counter-clockwise, holes clockwise)");
+  }
+  for (std::size_t l = 0; l < curve_.loops().size(); ++l) {
+    const basis::CurveLoop& loop = curve_.loops()[l];
     if (!loop.closed) {
       throw InputError("boundary discretization: the boundary is not closed (an open chain starts at curve element " +
                        std::to_string(loop.elements.front()) + ")");
+    }
+    // A loop that encloses no area runs along the same curve twice (a slit, e.g. two sides of non-conforming
+    // patches that the geometry reports as boundary): its collocation points would lie on the other side.
+    if (std::abs(curve_.loop_area(l)) <= 1e-10 * d2) {
+      throw InputError("boundary discretization: boundary loop " + std::to_string(l) + " (from curve element " +
+                       std::to_string(loop.elements.front()) +
+                       ") encloses no area: a slit, where the geometry's boundary runs along the same curve twice; "
+                       "the BEM needs simple closed boundary curves");
     }
     const std::vector<Index>& els = loop.elements;
     const std::size_t m = els.size();

@@ -177,24 +177,29 @@ double CurveGeometry::length(Index e) const {
   return w.dot(pts.speed);
 }
 
-double CurveGeometry::signed_area() const {
+double CurveGeometry::loop_area(std::size_t k) const {
   static const CompositeGauss rule;
   const Eigen::VectorXd& t = rule.t;
   const Eigen::VectorXd& w = rule.w;
-  // Relative to a point of the curve, so that far-away domains do not lose digits.
-  const Eigen::Vector2d origin = point(loops_.front().elements.front(), 0.0);
+  const CurveLoop& loop = loops_.at(k);
+  if (!loop.closed) return 0.0;
+  // Relative to a point of the loop, so that far-away domains do not lose digits.
+  const Eigen::Vector2d origin = point(loop.elements.front(), 0.0);
   double area = 0.0;
   CurvePoints pts;
-  for (const CurveLoop& loop : loops_) {
-    if (!loop.closed) continue;
-    for (Index e : loop.elements) {
-      evaluate(e, t, pts);
-      for (Index k = 0; k < t.size(); ++k) {
-        const Eigen::Vector2d x = pts.x.col(k) - origin;
-        area += 0.5 * w(k) * (x.x() * pts.dx(1, k) - x.y() * pts.dx(0, k));
-      }
+  for (Index e : loop.elements) {
+    evaluate(e, t, pts);
+    for (Index q = 0; q < t.size(); ++q) {
+      const Eigen::Vector2d x = pts.x.col(q) - origin;
+      area += 0.5 * w(q) * (x.x() * pts.dx(1, q) - x.y() * pts.dx(0, q));
     }
   }
+  return area;
+}
+
+double CurveGeometry::signed_area() const {
+  double area = 0.0;
+  for (std::size_t k = 0; k < loops_.size(); ++k) area += loop_area(k);
   return area;
 }
 

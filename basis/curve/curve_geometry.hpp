@@ -61,6 +61,8 @@ class CurveGeometry {
   /// Signed area enclosed by the closed loops, ½ ∮ (x dy − y dx) summed over them: positive when every loop
   /// has the domain on its left (outer loop counter-clockwise, holes clockwise).
   double signed_area() const;
+  /// ½ ∮ (x dy − y dx) over loop k alone (0 for an open chain): positive counter-clockwise.
+  double loop_area(std::size_t k) const;
 
  private:
   std::shared_ptr<const CurveSpace> space_;

@@ -18,6 +18,7 @@
 #include "bem/interior.hpp"
 #include "bem/solve.hpp"
 #include "bem_geometries.hpp"
+#include "core/error.hpp"
 #include "mesh/obj_reader.hpp"
 #include "support/rates.hpp"
 
@@ -152,4 +153,22 @@ TEST(BemFemGeometries, CatmullClarkDomainWithHolesMixedConvergence) {
       }
     }
   }
+}
+
+TEST(BemFemGeometries, SlitsAndClockwiseBoundariesAreRefused) {
+  // A loop along the same curve twice (the polyhedral splines of square_evs.obj report the non-conforming sides
+  // where one patch meets four as boundary: two slits of zero area) and a clockwise square: one clear error each.
+  const iga::mesh::PolyMesh net = iga::mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj");
+  basis::BackendFacts facts;
+  const basis::BoundaryTrace poly =
+      basis::trace_geometry(basis::make_geometry(basis::backend("polyhedral"), &net, basis::BackendOptions{}, facts));
+  const std::vector<int> dirichlet(static_cast<std::size_t>(poly.curve.num_elements()), bem::kDirichlet);
+  try {
+    const bem::BoundaryDiscretization d(poly.curve, dirichlet);
+    FAIL() << "a slit was accepted";
+  } catch (const iga::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("encloses no area"), std::string::npos) << e.what();
+  }
+  const auto clockwise = tb::polygons({tb::square_loop(0.0, 1.0, true)});
+  EXPECT_THROW(bem::BoundaryDiscretization(clockwise, std::vector<int>(4, bem::kDirichlet)), iga::InputError);
 }
