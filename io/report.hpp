@@ -5,7 +5,11 @@
 
 namespace iga::io {
 
-/// Writes a JSON report (pretty, 2-space indent, trailing newline). Strings that are not valid UTF-8 are
+/// Writes text to a file, or to standard output when path is "-"; every write is checked (a full disk, /dev/full):
+/// InputError(path, 0, "cannot write file"), "stdout" for "-".
+void write_text(const std::string& path, const std::string& text);
+
+/// Writes a JSON report (pretty, 2-space indent, trailing newline) with write_text ("-": standard output). Strings that are not valid UTF-8 are
 /// written with U+FFFD replacement characters. Throws InputError(path, 0, "cannot write file").
 void write_json(const std::string& path, const nlohmann::json& report);
 

@@ -11,6 +11,7 @@
 
 #include "basis/bspline/spline_curve.hpp"
 #include "core/error.hpp"
+#include "io/report.hpp"
 #include "refine/refine_smooth.hpp"
 
 namespace {
@@ -134,13 +135,7 @@ int main(int argc, char** argv) {
       fine = iga::refine::refine_smooth(curve, xs);
     }
     const std::string result = to_json(fine).dump(1) + "\n";
-    if (out.empty()) {
-      std::cout << result;
-    } else {
-      std::ofstream f(out);
-      if (!f) throw InputError(out + ": cannot write");
-      f << result;
-    }
+    iga::io::write_text(out.empty() ? "-" : out, result);  // every write checked (a full disk, /dev/full)
   } catch (const iga::Error& e) {
     std::cerr << "iga-knots: error: " << e.what() << std::endl;
     return 1;

@@ -94,3 +94,12 @@ TEST(IgaKnots, InvalidInputGivesOneLine) {
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("outside the domain"), std::string::npos) << r.err;
 }
+
+TEST(IgaKnots, FailedWritesAreErrors) {
+  // Issue 14, class 6: a write that fails (a full device) is one line naming the file, exit 1, not exit 0.
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const ProgramRun r = run_program("- --out /dev/full", curve);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("/dev/full:0: cannot write file"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
