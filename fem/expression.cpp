@@ -39,11 +39,31 @@ std::atomic<std::uint64_t> next_id{1};
 Expression::Expression(std::string text, std::string what, bool allow_normal)
     : text_(std::move(text)), what_(std::move(what)), allow_normal_(allow_normal), id_(next_id++) {
   if (text_.find_first_not_of(" \t") == std::string::npos) throw InputError(what_ + ": empty expression");
+  // Quoted in messages up to 60 characters, so that a long expression still gives one short line.
+  std::string quoted(1, '\'');
+  if (text_.size() > 60) {
+    quoted.append(text_, 0, 57);
+    quoted.append("...");
+  } else {
+    quoted.append(text_);
+  }
+  quoted.push_back('\'');
+  // muparser would read "x=3" as an assignment to x (value 3) and "1,2" as two results (the last one used):
+  // neither is a formula in x, y, z. Comparisons (==, <=, >=, !=) stay.
+  for (std::size_t k = 0; k < text_.size(); ++k) {
+    if (text_[k] != '=') continue;
+    const bool comparison = (k > 0 && std::string("=<>!").find(text_[k - 1]) != std::string::npos) ||
+                            (k + 1 < text_.size() && text_[k + 1] == '=');
+    if (!comparison) throw InputError(what_ + ": " + quoted + ": '=' assigns; use '==' to compare");
+  }
   try {
     Evaluator check(text_, allow_normal_);
     check.parser.Eval();  // compiles; reports syntax errors and undefined variables
+    if (check.parser.GetNumResults() != 1) {
+      throw InputError(what_ + ": " + quoted + ": ',' separates several expressions; give one");
+    }
   } catch (const mu::Parser::exception_type& e) {
-    throw InputError(what_ + ": '" + text_ + "': " + e.GetMsg());
+    throw InputError(what_ + ": " + quoted + ": " + e.GetMsg());
   }
 }
 

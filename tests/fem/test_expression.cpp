@@ -71,3 +71,27 @@ TEST(Expression, ThreadSafe) {
   for (auto& t : threads) t.join();
   EXPECT_EQ(bad.load(), 0);
 }
+
+TEST(Expression, CommaAndAssignmentAreRefused) {
+  // Issue 14, class 4: muparser reads '1,2' as two results (2 is used) and 'x=3' as an assignment (3): both
+  // silently gave another formula. Comparisons stay formulas.
+  using iga::fem::Expression;
+  auto message = [](const std::string& text) {
+    try {
+      Expression e(text, "--source");
+    } catch (const iga::InputError& err) {
+      return std::string(err.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message("1,2").find("',' separates several expressions"), std::string::npos) << message("1,2");
+  EXPECT_NE(message("x=3").find("'=' assigns"), std::string::npos) << message("x=3");
+  EXPECT_NE(message("sin(x) , y").find("--source"), std::string::npos);
+  for (const std::string ok : {"x==3", "x<=3", "x>=0.5", "x!=y", "(x>0.5)*(y<=1)"}) EXPECT_EQ(message(ok), "") << ok;
+  // A long expression's error is one short line.
+  const std::string longer = std::string(100000, '(') + "x";
+  const std::string m = message(longer);
+  EXPECT_FALSE(m.empty());
+  EXPECT_LT(m.size(), 300u) << m.substr(0, 300);
+  EXPECT_EQ(m.find('\n'), std::string::npos);
+}
