@@ -1,7 +1,9 @@
 #include "basis/geometry.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -20,6 +22,29 @@ Geometry::Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_p
                      std::to_string(control_points_.cols()));
   }
   if (!control_points_.allFinite()) throw InputError("geometry: a control point has a non-finite coordinate");
+  if (dim() == 2) orientation_ = majority_orientation();
+}
+
+int Geometry::majority_orientation() const {
+  // The sign of det J at each element's centre; the majority decides (a fold shows up at the others).
+  Index positive = 0, negative = 0;
+  Eigen::Matrix2Xd centre(2, 1);
+  BasisValues basis;
+  GeometryValues values;
+  for (Index e = 0; e < space_->num_elements(); ++e) {
+    centre.col(0) = space_->kind(e).shape == Shape::Triangle ? Eigen::Vector2d(1.0 / 3, 1.0 / 3) : Eigen::Vector2d(0.5, 0.5);
+    space_->evaluate(e, centre, 1, basis);
+    const auto dofs = space_->dofs(e);
+    Eigen::Vector2d xu = Eigen::Vector2d::Zero(), xv = Eigen::Vector2d::Zero();
+    for (std::size_t a = 0; a < dofs.size(); ++a) {
+      xu += basis.du(static_cast<Index>(a), 0) * control_points_.row(dofs[a]).transpose();
+      xv += basis.dv(static_cast<Index>(a), 0) * control_points_.row(dofs[a]).transpose();
+    }
+    const double det = xu(0) * xv(1) - xu(1) * xv(0);
+    positive += det > 0.0;
+    negative += det < 0.0;
+  }
+  return negative > positive ? -1 : 1;
 }
 
 void Geometry::evaluate(Index e, const BasisValues& basis, GeometryValues& out, bool check, int derivatives) const {
@@ -44,37 +69,79 @@ void Geometry::evaluate(Index e, const BasisValues& basis, GeometryValues& out, 
     out.xuv.noalias() = local.transpose().lazyProduct(basis.duv);
     out.xvv.noalias() = local.transpose().lazyProduct(basis.dvv);
   }
-  // Metric G = J^T J, its determinant |x_u × x_v|^2 (no cancellation), and T = J G^{-1}, for all points
-  // at once (row-wise array expressions over the q columns).
-  const auto xu = out.xu.array();
-  const auto xv = out.xv.array();
+  finish(e, q, out, check);
+}
+
+namespace {
+// Degeneracy is judged relative to the element's own scale: |x_u × x_v| below kDegenerate × max|x_u|, |x_v|)²
+// over the element. A fold of a planar map is det J < 0 (below −kDegenerate × the same scale at output points,
+// which may sit on an extraordinary vertex where the map's derivatives vanish).
+constexpr double kDegenerate = 1e-12;
+
+[[noreturn]] void fail_at(Index e, const GeometryValues& out, Index k, const std::string& what) {
+  std::ostringstream msg;
+  msg << std::setprecision(6) << "element " << e << ": " << what << " at (" << out.x(0, k) << ", " << out.x(1, k);
+  if (out.x(2, k) != 0.0) msg << ", " << out.x(2, k);
+  msg << ")";
+  throw NumericalError(msg.str());
+}
+}  // namespace
+
+void Geometry::finish(Index e, Index q, GeometryValues& out, bool check) const {
+  // The metric G = J^T J, its determinant |x_u × x_v|^2 (no cancellation) and T = J G^{-1} are formed from the
+  // derivatives scaled by 2^-s to O(1): a power of two is exact, so the values are those of the unscaled
+  // formulas, but neither |x_u × x_v|^2 nor G^{-1} over- or underflows for geometries in units of 1e±100.
+  const double largest = std::max(out.xu.cwiseAbs().maxCoeff(), out.xv.cwiseAbs().maxCoeff());
+  if (!std::isfinite(largest)) fail_at(e, out, 0, "the geometry map's derivatives are not finite");
+  const int s = largest > 0.0 ? std::ilogb(largest) : 0;
+  thread_local Eigen::Matrix3Xd xu_s, xv_s;
+  xu_s = out.xu * std::ldexp(1.0, -s);
+  xv_s = out.xv * std::ldexp(1.0, -s);
+  const auto xu = xu_s.array();
+  const auto xv = xv_s.array();
   out.normal.resize(3, q);
   out.normal.row(0) = xu.row(1) * xv.row(2) - xu.row(2) * xv.row(1);
   out.normal.row(1) = xu.row(2) * xv.row(0) - xu.row(0) * xv.row(2);
   out.normal.row(2) = xu.row(0) * xv.row(1) - xu.row(1) * xv.row(0);
   thread_local Eigen::RowVectorXd g11, g12, g22, det;
-  g11 = out.xu.colwise().squaredNorm();
-  g22 = out.xv.colwise().squaredNorm();
+  g11 = xu_s.colwise().squaredNorm();
+  g22 = xv_s.colwise().squaredNorm();
   g12 = (xu * xv).colwise().sum().matrix();
   det = out.normal.colwise().squaredNorm();
   out.measure = det.transpose().cwiseSqrt();
-  const bool valid = (out.measure.array() > 0.0).all() && out.measure.allFinite();
-  if (!valid && check) {
-    Index k = 0;
-    while (out.measure(k) > 0.0 && std::isfinite(out.measure(k))) ++k;
-    std::ostringstream msg;
-    msg << "element " << e << ": degenerate geometry map (surface element " << out.measure(k)
-        << ") at quadrature point " << k;
-    throw NumericalError(msg.str());
+  const double floor = kDegenerate * std::ldexp(largest, -s) * std::ldexp(largest, -s);
+  const bool planar = dim() == 2;
+  bool valid = true;
+  for (Index k = 0; k < q; ++k) {
+    // Planar: the signed det J is the z component of x_u × x_v, of the geometry's orientation everywhere.
+    const double signed_measure = planar ? orientation_ * out.normal(2, k) : out.measure(k);
+    if (signed_measure > floor) continue;
+    valid = false;
+    if (planar && signed_measure < (check ? 0.0 : -floor)) {
+      std::ostringstream what;
+      what << std::setprecision(3) << "det J = " << std::ldexp(out.normal(2, k), 2 * s)
+           << (orientation_ > 0 ? " < 0" : " > 0") << " where most of the domain has det J " << (orientation_ > 0 ? "> 0" : "< 0")
+           << ": the geometry map folds over";
+      fail_at(e, out, k, what.str());
+    }
+    if (check) {
+      std::ostringstream what;
+      what << std::setprecision(3) << "degenerate geometry map (|x_u × x_v| = " << std::ldexp(out.measure(k), 2 * s)
+           << ", below 1e-12 of the element's largest |x_u|² or |x_v|²)";
+      fail_at(e, out, k, what.str());
+    }
   }
   out.normal.array().rowwise() /= out.measure.transpose().array();
   out.tu.resize(3, q);
   out.tv.resize(3, q);
-  out.tu = (xu.rowwise() * (g22.array() / det.array()) - xv.rowwise() * (g12.array() / det.array())).matrix();
-  out.tv = (xv.rowwise() * (g11.array() / det.array()) - xu.rowwise() * (g12.array() / det.array())).matrix();
+  const double back = std::ldexp(1.0, -s);  // T = J G^{-1} = 2^-s T_s
+  out.tu = ((xu.rowwise() * (g22.array() / det.array()) - xv.rowwise() * (g12.array() / det.array())) * back).matrix();
+  out.tv = ((xv.rowwise() * (g11.array() / det.array()) - xu.rowwise() * (g12.array() / det.array())) * back).matrix();
+  out.measure *= std::ldexp(1.0, 2 * s);
   if (!valid) {
     for (Index k = 0; k < q; ++k) {
-      if (!(out.measure(k) > 0.0) || !std::isfinite(out.measure(k))) {
+      if (!(out.measure(k) > 0.0) || !std::isfinite(out.measure(k)) || !out.tu.col(k).allFinite() ||
+          !out.tv.col(k).allFinite()) {
         out.normal.col(k).setZero();
         out.tu.col(k).setZero();
         out.tv.col(k).setZero();

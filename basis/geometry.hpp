@@ -30,18 +30,28 @@ class Geometry {
   const std::shared_ptr<const Space>& space_ptr() const { return space_; }
   int dim() const { return static_cast<int>(control_points_.cols()); }
   const Eigen::MatrixXd& control_points() const { return control_points_; }
+  /// Planar geometries: +1 when det J > 0 (a counter-clockwise map, as a net whose faces are listed
+  /// counter-clockwise gives), −1 when det J < 0 (clockwise), decided by the majority of the elements' centres;
+  /// evaluation refuses points of the other sign (a fold). Surfaces: +1.
+  int orientation() const { return orientation_; }
 
   /// Map data of element e from basis values already evaluated there (derivatives >= 1).
-  /// With check, throws NumericalError naming the element when the map is degenerate (measure 0 or not
-  /// finite) at a point; without, such points get tu = tv = 0 (used by output, which samples element edges).
+  /// With check, throws NumericalError naming the element and the physical point when the map is degenerate
+  /// there (|x_u × x_v| below 1e-12 of the element's largest derivative squared, so independent of the units)
+  /// or, for a planar domain, when the sign of det J is not orientation(): the map folds over. Without check (output,
+  /// which samples element edges and extraordinary vertices), such points get tu = tv = 0, and only a clear
+  /// fold (det J below −1e-12 of the scale) throws.
   /// With derivatives = 2 (basis evaluated with second derivatives) also xuu, xuv, xvv.
   void evaluate(Index e, const BasisValues& basis, GeometryValues& out, bool check = true, int derivatives = 1) const;
   /// Convenience: evaluates the basis first.
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, GeometryValues& out) const;
 
  private:
+  int majority_orientation() const;
+  void finish(Index e, Index q, GeometryValues& out, bool check) const;
   std::shared_ptr<const Space> space_;
   Eigen::MatrixXd control_points_;
+  int orientation_ = 1;
 };
 
 }  // namespace iga::basis
