@@ -68,6 +68,13 @@ LinearResult solve_linear(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, co
     const double rc = f.rcond();
     r.condition = rc > 0.0 ? 1.0 / rc : std::numeric_limits<double>::infinity();
     r.solver = "lu";
+    // A singular or nearly singular system leaves LU with a solution that does not solve it: refuse it.
+    const double bn = b.norm();
+    const double residual = (a * r.x - b).norm() / (bn > 0.0 ? bn : 1.0);
+    if (!(residual <= 1e-6)) {
+      throw NumericalError("bem solve: LU's solution has relative residual " + std::to_string(residual) +
+                           " (condition estimate " + std::to_string(r.condition) + "): the system is singular to working precision");
+    }
     return r;
   }
   const GmresResult g = gmres(a, b, o.gmres_tolerance, o.gmres_restart, o.gmres_max_iterations, blocks);

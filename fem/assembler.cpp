@@ -14,21 +14,25 @@
 namespace iga::fem {
 
 namespace {
-// Runs body(i) for i in [0, n) with OpenMP; the first exception thrown is rethrown after the loop.
+// Runs body(i) for i in [0, n) with OpenMP. When bodies throw, the exception of the lowest index is rethrown
+// after the loop, whatever the thread count and timing (an index is skipped only above a known failure, so every
+// lower one runs): the same input gives the same message.
 template <class Body>
 void parallel_for(Index n, Body&& body) {
   std::exception_ptr error;
-  std::atomic<bool> failed{false};
+  std::atomic<Index> failed_at{n};
   std::mutex m;
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    if (failed.load(std::memory_order_relaxed)) continue;
+    if (i > failed_at.load(std::memory_order_relaxed)) continue;
     try {
       body(i);
     } catch (...) {
       std::lock_guard<std::mutex> lock(m);
-      if (!error) error = std::current_exception();
-      failed = true;
+      if (i < failed_at.load()) {
+        error = std::current_exception();
+        failed_at = i;
+      }
     }
   }
   if (error) std::rethrow_exception(error);

@@ -38,7 +38,16 @@ DirichletConditions project_dirichlet(const Assembler& assembler, std::span<cons
   for (Index k = 0; k < ns; ++k) bs(k) = rhs(bc.dofs[static_cast<std::size_t>(k)]);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(mss);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0.0)) {
-    throw NumericalError("Dirichlet projection: the boundary mass matrix of the trace functions is not definite");
+    // The usual cause is a rule with fewer points on an element side than functions live there (gauss:1 on
+    // quadratics): say so with the counts, not only that the matrix is singular.
+    Index side_points = 0;
+    for (const basis::BoundaryEdge& e : edges) {
+      side_points += assembler.rules().side_rule(assembler.geometry().space().kind(e.element), e.side).size();
+    }
+    throw NumericalError("Dirichlet projection: the boundary mass matrix of the " + std::to_string(ns) +
+                         " functions on the Dirichlet boundary is singular; quadrature '" + assembler.rules().name() +
+                         "' puts " + std::to_string(side_points) + " points on its " + std::to_string(edges.size()) +
+                         " element sides (each side needs at least degree + 1: use more points)");
   }
   bc.values = ldlt.solve(bs);
   if (trace.dependent().nonZeros() > 0) bc.coupling = trace.dependent();

@@ -4,6 +4,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <numbers>
 #include <unordered_map>
 
@@ -34,13 +36,28 @@ struct Expression::Evaluator {
 
 namespace {
 std::atomic<std::uint64_t> next_id{1};
+
+std::string point_text(const Eigen::Matrix3Xd& x, Eigen::Index k) {
+  std::ostringstream s;
+  s << std::setprecision(6) << "(" << x(0, k) << ", " << x(1, k) << ", " << x(2, k) << ")";
+  return s.str();
+}
+}  // namespace
+
+void Expression::check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& out) const {
+  for (Eigen::Index k = 0; k < out.size(); ++k) {
+    if (std::isfinite(out(k))) continue;
+    throw InputError(what_ + ": " + quoted_ + " is " + (std::isnan(out(k)) ? "NaN" : "infinite") + " at " +
+                     point_text(x, k) + "; data must be finite wherever they are used");
+  }
 }
 
 Expression::Expression(std::string text, std::string what, bool allow_normal)
     : text_(std::move(text)), what_(std::move(what)), allow_normal_(allow_normal), id_(next_id++) {
   if (text_.find_first_not_of(" \t") == std::string::npos) throw InputError(what_ + ": empty expression");
   // Quoted in messages up to 60 characters, so that a long expression still gives one short line.
-  std::string quoted(1, '\'');
+  std::string& quoted = quoted_;
+  quoted.assign(1, '\'');
   if (text_.size() > 60) {
     quoted.append(text_, 0, 57);
     quoted.append("...");
@@ -85,6 +102,7 @@ void Expression::values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const {
     ev.z = x(2, k);
     out(k) = ev.parser.Eval();
   }
+  check_finite(x, out);
 }
 
 void Expression::values(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& n, Eigen::VectorXd& out) const {
@@ -99,6 +117,7 @@ void Expression::values(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& n, Ei
     ev.nz = n(2, k);
     out(k) = ev.parser.Eval();
   }
+  check_finite(x, out);
 }
 
 }  // namespace iga::fem

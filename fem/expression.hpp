@@ -12,7 +12,8 @@ namespace iga::fem {
 /// log, log10, sqrt, abs, sign, min, max, ...) plus atan2(y, x) and pow(a, b).
 /// The text is checked when the object is made: InputError("<what>: <muparser's message>") for a syntax
 /// error or an unknown variable, where `what` names the option (e.g. "--source").
-/// Evaluation is thread-safe (one parser per thread).
+/// Evaluation is thread-safe (one parser per thread). A value that is not finite (1/0, sqrt(-1), log(0), an
+/// overflow) throws InputError naming the option, the expression and the point: data are never NaN.
 class Expression final : public Function, public BoundaryFunction {
  public:
   Expression(std::string text, std::string what, bool allow_normal = false);
@@ -24,7 +25,8 @@ class Expression final : public Function, public BoundaryFunction {
  private:
   struct Evaluator;
   Evaluator& evaluator() const;
-  std::string text_, what_;
+  void check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& out) const;
+  std::string text_, what_, quoted_;
   bool allow_normal_;
   std::uint64_t id_;
 };

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "fem/assembler.hpp"
@@ -108,7 +109,9 @@ void PoissonSolver::setup() {
   if (done_ >= 1) return;
   const basis::Space& space = geometry_.space();
   const PoissonProblem& problem = problem_;
-  if (problem.reaction < 0) throw InputError("reaction coefficient must be >= 0");
+  if (!(problem.reaction >= 0) || !std::isfinite(problem.reaction)) {
+    throw InputError("reaction coefficient must be a finite number >= 0, got " + std::to_string(problem.reaction));
+  }
   const std::vector<basis::BoundaryEdge> boundary = space.boundary_edges();
   BoundarySplit split = split_boundary(geometry_, problem);
   dirichlet_edges_ = std::move(split.dirichlet);
@@ -207,7 +210,13 @@ void PoissonSolver::errors() {
     });
     exact = shifted_function(exact, -mean(0) / r_.domain_measure);
   }
-  if (exact) r_.errors = compute_errors(*sys_->assembler, r_.u, *exact);
+  if (exact) {
+    r_.errors = compute_errors(*sys_->assembler, r_.u, *exact);
+    if (!std::isfinite(r_.errors->l2) || !std::isfinite(r_.errors->h1) || !std::isfinite(r_.errors->l2_exact)) {
+      throw NumericalError("the error norms against the exact solution are not finite (L2 " + std::to_string(r_.errors->l2) +
+                           ", H1 " + std::to_string(r_.errors->h1) + "): does the exact solution overflow?");
+    }
+  }
   r_.error_seconds = seconds_since(t0);
   done_ = 4;
 }

@@ -3,6 +3,8 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/IterativeLinearSolvers>
 #include <chrono>
+#include <iomanip>
+#include <sstream>
 
 #include "core/error.hpp"
 
@@ -16,10 +18,18 @@ SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b
     r.solver = options.kind == SolverKind::Cholmod ? "cholmod-supernodal-llt" : "cg-ichol";
     return r;
   }
+  if (!b.allFinite()) throw NumericalError("the right-hand side of the linear system is not finite");
+  if (!Eigen::Map<const Eigen::VectorXd>(a.valuePtr(), a.nonZeros()).allFinite()) {
+    throw NumericalError("the system matrix is not finite (a degenerate or overflowing geometry?)");
+  }
   if (options.kind == SolverKind::Cholmod) {
     r.solver = "cholmod-supernodal-llt";
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
     llt.compute(a);
+    if (llt.cholmod().status == CHOLMOD_OUT_OF_MEMORY) {
+      throw NumericalError("CHOLMOD: out of memory factorising the system matrix (" + std::to_string(a.rows()) +
+                           " unknowns, " + std::to_string(a.nonZeros()) + " non-zeros); try --solver cg");
+    }
     if (llt.info() != Eigen::Success) {
       throw NumericalError("CHOLMOD: the system matrix (" + std::to_string(a.rows()) +
                            " unknowns) is not positive definite; is the problem well posed?");
@@ -44,6 +54,13 @@ SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b
   }
   const double bn = b.norm();
   r.residual_norm = (a * r.x - b).norm() / (bn > 0 ? bn : 1.0);
+  if (!r.x.allFinite()) throw NumericalError(r.solver + ": the solution is not finite");
+  if (!(r.residual_norm <= options.max_residual)) {
+    std::ostringstream msg;
+    msg << std::setprecision(3) << r.solver << ": relative residual " << r.residual_norm << " of the solution is above "
+        << options.max_residual << " (" << a.rows() << " unknowns): the system is too ill-conditioned to trust the result";
+    throw NumericalError(msg.str());
+  }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -14,6 +14,9 @@ struct SolverOptions {
   SolverKind kind = SolverKind::Cholmod;
   double tolerance = 1e-12;   ///< CG: relative residual
   Index max_iterations = 0;   ///< CG: 0 = 10 × size
+  /// Any solver: a solution whose relative residual ||A x - b|| / ||b|| is above this is refused
+  /// (NumericalError with the residual), never returned as if it were the answer.
+  double max_residual = 1e-6;
 };
 
 struct SolveResult {
@@ -25,7 +28,8 @@ struct SolveResult {
 };
 
 /// Solves A x = b for symmetric positive definite A (both triangles stored). NumericalError when the
-/// matrix is not positive definite or CG does not converge.
+/// matrix or right-hand side is not finite, the matrix is not positive definite, CG does not converge, or
+/// the solution is not finite or has a relative residual above options.max_residual.
 SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b, const SolverOptions& options);
 
 /// "cholmod" or "cg"; InputError otherwise.

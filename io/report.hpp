@@ -10,7 +10,8 @@ namespace iga::io {
 void write_text(const std::string& path, const std::string& text);
 
 /// Writes a JSON report (pretty, 2-space indent, trailing newline) with write_text ("-": standard output). Strings that are not valid UTF-8 are
-/// written with U+FFFD replacement characters. Throws InputError(path, 0, "cannot write file").
+/// written with U+FFFD replacement characters. Throws InputError(path, 0, "cannot write file"), and
+/// NumericalError naming the key when a number in the report is NaN or infinite (null means "not requested").
 void write_json(const std::string& path, const nlohmann::json& report);
 
 }  // namespace iga::io

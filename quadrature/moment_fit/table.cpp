@@ -18,7 +18,7 @@ std::string table_file_name(int valence, Space space, bool symmetric) {
 
 void write_table(const std::string& path, const Table& t) {
   std::ofstream out(path);
-  if (!out) throw InputError(path, 0, "cannot open for writing");
+  if (!out) throw InputError(path, 0, "cannot write file");
   out << "# iga fitted quadrature rule for a Catmull-Clark element with an extraordinary vertex at (0,0)\n"
       << "# (moment fitting, thesis 4.2.4): sum_i w_i f(u_i, v_i) = integral of f over [0,1]^2 for every f of the\n"
       << "# space (phi: the 2n+8 subdivision splines; mass: their pairwise products; stiffness: grad phi_a . grad\n"
@@ -35,7 +35,8 @@ void write_table(const std::string& path, const Table& t) {
   for (Eigen::Index i = 0; i < t.rule.size(); ++i) {
     out << t.rule.points(0, i) << " " << t.rule.points(1, i) << " " << t.rule.weights(i) << "\n";
   }
-  if (!out) throw InputError(path, 0, "write failed");
+  out.flush();  // a full disk shows only when the buffer goes out
+  if (!out) throw InputError(path, 0, "cannot write file");
 }
 
 namespace {

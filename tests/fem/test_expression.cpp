@@ -95,3 +95,32 @@ TEST(Expression, CommaAndAssignmentAreRefused) {
   EXPECT_LT(m.size(), 300u) << m.substr(0, 300);
   EXPECT_EQ(m.find('\n'), std::string::npos);
 }
+
+TEST(Expression, NonFiniteValuesAreErrorsNamingThePoint) {
+  // Issue 14, class 3: 1/0, sqrt(-1), log(0) and an overflow gave NaN or infinite data and a NaN solution with
+  // exit 0. A value that is not finite is an error naming the option, the expression and the point.
+  using iga::fem::Expression;
+  Eigen::Matrix3Xd x(3, 2);
+  x << 0.5, 0.0, 0.25, 0.0, 0.0, 0.0;
+  Eigen::VectorXd out;
+  auto message = [&](const std::string& text) {
+    try {
+      Expression(text, "--source").values(x, out);
+    } catch (const iga::InputError& err) {
+      return std::string(err.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message("1/0"), "--source: '1/0' is infinite at (0.5, 0.25, 0); data must be finite wherever they are used");
+  EXPECT_EQ(message("sqrt(-1)"), "--source: 'sqrt(-1)' is NaN at (0.5, 0.25, 0); data must be finite wherever they are used");
+  // The second point is where log(x) is -inf: the message names it, not the first.
+  EXPECT_EQ(message("log(x)"), "--source: 'log(x)' is infinite at (0, 0, 0); data must be finite wherever they are used");
+  EXPECT_EQ(message("exp(1000*(x+1))"), "--source: 'exp(1000*(x+1))' is infinite at (0.5, 0.25, 0); data must be finite wherever they are used");
+  EXPECT_EQ(message("x*y+1"), "");
+  // Boundary data with a normal go through the same check.
+  const Expression g("nx/ny", "--neumann", true);
+  Eigen::Matrix3Xd n = Eigen::Matrix3Xd::Zero(3, 2);
+  n(0, 0) = 1.0;
+  n(1, 1) = 1.0;
+  EXPECT_THROW(g.values(x, n, out), iga::InputError);
+}

@@ -482,3 +482,19 @@ TEST(WriteJson, MissingDirectoryThrowsInputError) {
 }
 
 }  // namespace
+
+TEST(Report, NonFiniteNumbersAreRefusedNotWrittenAsNull) {
+  // Issue 14, class 3: nlohmann-json writes NaN and infinity as null, which in a report reads "not requested".
+  const std::string path = ::testing::TempDir() + "/iga_nonfinite.json";
+  std::remove(path.c_str());
+  const nlohmann::json report = {{"dofs", 10}, {"errors", {{"l2", 1e-3}, {"h1", std::nan("")}}}};
+  try {
+    iga::io::write_json(path, report);
+    FAIL() << "a NaN was written";
+  } catch (const iga::NumericalError& e) {
+    EXPECT_EQ(std::string(e.what()), "the result errors/h1 is not finite (nan); no report written to " + path);
+  }
+  EXPECT_FALSE(std::ifstream(path).good());
+  EXPECT_THROW(iga::io::write_json(path, nlohmann::json{{"list", {1.0, INFINITY}}}), iga::NumericalError);
+  EXPECT_NO_THROW(iga::io::write_json(path, nlohmann::json{{"l2_error", nullptr}, {"x", 1.5}}));
+}
