@@ -121,7 +121,7 @@ PolyMesh read_obj(const std::string& path) {
 PolyMesh parse_obj(std::istream& in, const std::string& name) {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::vector<Index>> faces;
-  std::vector<long> face_lines;
+  std::vector<long> face_lines, vertex_lines;
   std::vector<Index> sorted;
   std::string line;
   long line_number = 0;
@@ -153,6 +153,7 @@ PolyMesh parse_obj(std::istream& in, const std::string& name) {
         where.fail("vertex has " + std::to_string(count) + " coordinates; a vertex needs x y z");
       }
       points.push_back(p);
+      vertex_lines.push_back(line_number);
     } else if (keyword == "f") {
       const Index num_vertices = static_cast<Index>(points.size());
       std::vector<Index> face;
@@ -182,7 +183,9 @@ PolyMesh parse_obj(std::istream& in, const std::string& name) {
     throw InputError(name, 0, "file has no faces");
   }
   try {
-    return PolyMesh::build(std::move(points), std::move(faces));
+    PolyMesh mesh = PolyMesh::build(std::move(points), std::move(faces));
+    mesh.set_source_lines(std::move(vertex_lines), std::move(face_lines));
+    return mesh;
   } catch (const TopologyError& e) {
     const Index f = e.face();
     const long at_line = (f >= 0 && f < static_cast<Index>(face_lines.size())) ? face_lines[static_cast<std::size_t>(f)] : 0;

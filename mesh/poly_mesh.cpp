@@ -135,7 +135,7 @@ PolyMesh PolyMesh::build(std::vector<Eigen::Vector3d> points, std::vector<std::v
   const Index nv = static_cast<Index>(points.size());
   for (Index v = 0; v < nv; ++v) {
     if (!points[at(v)].allFinite()) {
-      throw InputError("vertex " + std::to_string(v) + " has a non-finite coordinate");
+      throw InputError("vertex " + std::to_string(v + 1) + " has a non-finite coordinate");
     }
   }
   if (faces.empty()) {
@@ -336,6 +336,19 @@ Index PolyMesh::face_size(Index f) const { return face_offsets_[at(f) + 1] - fac
 bool PolyMesh::is_boundary_vertex(Index v) const {
   const Index h = vertex_half_edge_[at(v)];
   return h >= 0 && half_edges_[at(h)].twin < 0;
+}
+
+void PolyMesh::set_source_lines(std::vector<long> vertex_lines, std::vector<long> face_lines) {
+  vertex_lines_ = std::move(vertex_lines);
+  face_lines_ = std::move(face_lines);
+}
+
+long PolyMesh::vertex_line(Index v) const {
+  return v >= 0 && static_cast<std::size_t>(v) < vertex_lines_.size() ? vertex_lines_[static_cast<std::size_t>(v)] : 0;
+}
+
+long PolyMesh::face_line(Index f) const {
+  return f >= 0 && static_cast<std::size_t>(f) < face_lines_.size() ? face_lines_[static_cast<std::size_t>(f)] : 0;
 }
 
 }  // namespace iga::mesh

@@ -105,6 +105,12 @@ class PolyMesh {
   /// All z coordinates are exactly 0.
   bool is_planar() const { return planar_; }
 
+  /// Where the mesh came from, for messages in the user's words: the line of a file on which vertex v (face
+  /// f) was read, 0 when unknown (a mesh made in memory, or refined from one). Set by the OBJ reader.
+  void set_source_lines(std::vector<long> vertex_lines, std::vector<long> face_lines);
+  long vertex_line(Index v) const;
+  long face_line(Index f) const;
+
  private:
   std::vector<Eigen::Vector3d> points_;
   std::vector<Index> face_offsets_;  // size num_faces + 1
@@ -115,6 +121,7 @@ class PolyMesh {
   std::vector<int> num_vertex_faces_;
   std::vector<std::vector<Index>> boundary_loops_;
   bool planar_ = true;
+  std::vector<long> vertex_lines_, face_lines_;
 };
 
 }  // namespace iga::mesh

@@ -28,15 +28,15 @@ void validate(const mesh::PolyMesh& m, const std::string& name) {
   for (Index v = 0; v < m.num_vertices(); ++v) {
     if (!m.is_boundary_vertex(v)) {
       if (m.valence(v) < 3) {
-        throw InputError(name + ": interior vertex " + std::to_string(v) + " has valence " +
+        throw InputError(name, m.vertex_line(v), "interior vertex " + std::to_string(v + 1) + " has valence " +
                          std::to_string(m.valence(v)) + " (at least 3 needed)");
       }
       if (m.valence(v) > 16) {
-        throw InputError(name + ": interior vertex " + std::to_string(v) + " has valence " +
+        throw InputError(name, m.vertex_line(v), "interior vertex " + std::to_string(v + 1) + " has valence " +
                          std::to_string(m.valence(v)) + " (at most 16 supported)");
       }
     } else if (m.num_vertex_faces(v) > 15) {
-      throw InputError(name + ": boundary vertex " + std::to_string(v) + " has " +
+      throw InputError(name, m.vertex_line(v), "boundary vertex " + std::to_string(v + 1) + " has " +
                        std::to_string(m.num_vertex_faces(v)) + " faces (at most 15 supported)");
     }
   }
@@ -84,7 +84,7 @@ CatmullClarkSpace::CatmullClarkSpace(const mesh::PolyMesh& mesh, const std::stri
   if (needs_global_step(mesh)) {
     for (Index f = 0; f < mesh.num_faces(); ++f) {
       if (mesh.face_size(f) > 16) {
-        throw InputError(name + ": face " + std::to_string(f) + " has " + std::to_string(mesh.face_size(f)) +
+        throw InputError(name, mesh.face_line(f), "face " + std::to_string(f + 1) + " has " + std::to_string(mesh.face_size(f)) +
                          " sides (at most 16 supported: its face point becomes an EV of that valence)");
       }
     }

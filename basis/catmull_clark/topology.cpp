@@ -17,7 +17,7 @@ namespace Osd = OpenSubdiv::OPENSUBDIV_VERSION;
 void check_no_isolated_vertices(const mesh::PolyMesh& mesh, const std::string& name) {
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
     if (mesh.num_vertex_faces(v) == 0) {
-      throw InputError(name + ": vertex " + std::to_string(v) +
+      throw InputError(name, mesh.vertex_line(v), "vertex " + std::to_string(v + 1) +
                        " is not used by any face (an isolated control point has no basis function)");
     }
   }

@@ -2,6 +2,9 @@
 // of unity, the unit-square net, and bad input.
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include "mesh/obj_reader.hpp"
+
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
@@ -488,23 +491,25 @@ std::string error_of(F&& f) {
   return "no InputError";
 }
 
+// Messages name vertices and faces in the file's own 1-based numbers (issue 14, class 8: they used to count from
+// 0 and so named the wrong vertex), with the file's line when the net was read from one.
 TEST(CatmullClarkSpace, BadInput) {
-  {  // isolated vertex
+  {  // isolated vertex: the fifth
     std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {5, 5, 0}};
     const PolyMesh m = PolyMesh::build(p, {{0, 1, 2, 3}});
     const std::string msg = error_of([&] { CatmullClarkSpace s(m, "net.obj"); });
     EXPECT_NE(msg.find("net.obj"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("vertex 4"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("vertex 5 is not used"), std::string::npos) << msg;
   }
   {  // valence 17
     const Fan fan = make_fan(17, 2, true);
     const std::string msg = error_of([&] { CatmullClarkSpace s(PolyMesh::build(fan.points, fan.faces)); });
-    EXPECT_NE(msg.find("vertex 0 has valence 17"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("vertex 1 has valence 17"), std::string::npos) << msg;
   }
   {  // boundary vertex with 16 faces
     const PolyMesh m = square_boundary_fan(16, 2);
     const std::string msg = error_of([&] { CatmullClarkSpace s(m); });
-    EXPECT_NE(msg.find("boundary vertex 0 has 16 faces"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("boundary vertex 1 has 16 faces"), std::string::npos) << msg;
   }
   {  // a 17-gon (needs the global step; its face point would have valence 17)
     std::vector<Eigen::Vector3d> p;
@@ -514,13 +519,19 @@ TEST(CatmullClarkSpace, BadInput) {
       f.push_back(i);
     }
     const std::string msg = error_of([&] { CatmullClarkSpace s(PolyMesh::build(p, {f})); });
-    EXPECT_NE(msg.find("face 0 has 17 sides"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("face 1 has 17 sides"), std::string::npos) << msg;
   }
   {  // interior vertices of valence 2: a pillow of two quads
     std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     const PolyMesh m = PolyMesh::build(p, {{0, 1, 2, 3}, {0, 3, 2, 1}});
     const std::string msg = error_of([&] { CatmullClarkSpace s(m); });
-    EXPECT_NE(msg.find("interior vertex 0 has valence 2"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("interior vertex 1 has valence 2"), std::string::npos) << msg;
+  }
+  {  // read from a file: the message has the line on which the unused vertex stands
+    std::istringstream obj("# a square and a stray point\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n\nv 5 5 0\nf 1 2 3 4\n");
+    const PolyMesh m = iga::mesh::parse_obj(obj, "net.obj");
+    EXPECT_EQ(error_of([&] { CatmullClarkSpace s(m, "net.obj"); }),
+              "net.obj:7: vertex 5 is not used by any face (an isolated control point has no basis function)");
   }
 }
 
