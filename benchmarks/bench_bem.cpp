@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "fem/expression.hpp"
 #include "fem/threads.hpp"
+#include "io/program.hpp"
 #include "io/report.hpp"
 #include "mesh/obj_reader.hpp"
 
@@ -115,7 +116,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-dofs", o.max_dofs, "stop a degree's sweep above this many dofs")->capture_default_str();
   app.add_option("--lu-max", o.lu_max, "LU (and the condition estimate) only up to this many dofs")->capture_default_str();
   app.add_option("--exact", o.exact, "harmonic u for the Dirichlet data and the flux error")->capture_default_str();
-  app.add_option("--threads", o.threads, "threads (default: OpenMP's)")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", o.threads, "threads (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--json", o.json, "JSON report ('none' to skip)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {

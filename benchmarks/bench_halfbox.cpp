@@ -28,6 +28,7 @@
 #include "fem/poisson.hpp"
 #include "fem/problems.hpp"
 #include "fem/threads.hpp"
+#include "io/program.hpp"
 #include "io/report.hpp"
 #include "mesh/obj_reader.hpp"
 #include "mesh/three_valent.hpp"
@@ -213,7 +214,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 8))->capture_default_str();
   app.add_option("--cc-refine", o.cc_refine, "refinements of square_evs.obj (144 · 4^K elements)")
       ->check(CLI::Range(0, 8))->capture_default_str();
-  app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--seed", o.seed, "seed of the random evaluation points")->capture_default_str();
   app.add_option("--tri-mesh", o.tri_mesh, "triangle mesh whose dual net the half-box Poisson run uses")
       ->check(CLI::ExistingFile)->capture_default_str();

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -19,8 +20,10 @@
 #include "bem/solve.hpp"
 #include "core/error.hpp"
 #include "fem/expression.hpp"
+#include "fem/memory.hpp"
 #include "fem/poisson.hpp"
 #include "fem/threads.hpp"
+#include "io/program.hpp"
 #include "io/report.hpp"
 #include "io/sampled_writer.hpp"
 #include "io/vtu_writer.hpp"
@@ -36,6 +39,7 @@ struct Options {
   std::string collocation = "greville", joints = "smooth", solver = "auto", vtu = "bem.vtu", boundary_vtu = "bem_boundary.vtu";
   std::string json = "bem.json";
   double gmres_tolerance = 1e-12;
+  double max_memory = 0.0;  // GiB; 0: what the system has available
   int degree = 2, refine = 2, geometry_refine = -1, grid = 0, samples = 4, threads = 0;
   bool compare_fem = false, quiet = false;
   std::vector<std::string> given;
@@ -201,10 +205,16 @@ nlohmann::json write_grid(const Options& o, const bem::BoundaryDiscretization& d
   g.point_scalars = {{"u", u}, {"inside", inside}};
   nlohmann::json j = {{"grid", n}, {"points", n * n}, {"inside_points", static_cast<Index>(inside.sum())}};
   if (exact) {
-    Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Zero(3, n * n);
-    x.topRows<2>() = g.points;
-    Eigen::VectorXd ue;
-    exact->values(x, ue);
+    // The exact solution only where it is defined: at the grid points inside the domain (0 outside).
+    std::vector<Index> in;
+    for (Index k = 0; k < n * n; ++k) {
+      if (inside(k) > 0.5) in.push_back(k);
+    }
+    Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Zero(3, static_cast<Index>(in.size()));
+    for (std::size_t k = 0; k < in.size(); ++k) x.col(static_cast<Index>(k)).head<2>() = g.points.col(in[k]);
+    Eigen::VectorXd ue_in, ue = Eigen::VectorXd::Zero(n * n);
+    exact->values(x, ue_in);
+    for (std::size_t k = 0; k < in.size(); ++k) ue(in[k]) = ue_in(static_cast<Index>(k));
     const Eigen::VectorXd err = ((u - ue).array() * inside.array()).matrix();
     g.point_scalars.insert(g.point_scalars.end(), {{"exact", ue}, {"error", err}});
     j["max_interior_error"] = err.cwiseAbs().maxCoeff();
@@ -234,6 +244,17 @@ int run(const Options& o) {
   basis::BackendFacts facts;
   std::optional<mesh::PolyMesh> net;
   if (!o.mesh.empty()) net = mesh::read_obj(o.mesh);
+  {
+    // Size before work: the geometry's elements after --geometry-refine (each step splits every element in four),
+    // the FEM of --compare-fem on them and the interior output.
+    const double elements = (net ? static_cast<double>(net->num_faces()) : 1.0) * std::pow(4.0, steps);
+    const double bytes = (o.compare_fem ? fem::poisson_memory(elements, 16) : 1000.0 * elements) +
+                         (o.grid == 0 && o.vtu != "none" ? fem::vtu_memory(elements, o.samples) : 0.0);
+    std::ostringstream what;
+    what << "the geometry (about " << std::setprecision(3) << elements << " elements after --geometry-refine " << steps << ")";
+    fem::check_memory(bytes, o.max_memory * 1024.0 * 1024.0 * 1024.0, what.str(),
+                      "each --geometry-refine step needs four times more");
+  }
   const basis::Refinement refined = basis::make_refined_geometry(backend, net ? &*net : nullptr, bo, steps, facts);
   for (const std::string& note : facts.notes) log(note);
   const basis::Geometry& geometry = refined.geometry;
@@ -252,6 +273,14 @@ int run(const Options& o) {
   log("BEM on " + std::to_string(d.num_dofs()) + " dofs, " + std::to_string(d.num_elements()) + " elements on " +
       std::to_string(trace.curve.loops().size()) + " boundary loop(s), " + std::to_string(d.segments().size()) +
       " segment(s); " + std::to_string(fem::num_threads()) + " threads");
+  {
+    // Size before work: H, G, the system matrix and its LU are dense (4 × 8 bytes per entry); the grid output.
+    const double n = static_cast<double>(d.num_dofs());
+    const double grid = static_cast<double>(o.grid) * o.grid;
+    fem::check_memory(32.0 * n * n + 100.0 * grid, o.max_memory * 1024.0 * 1024.0 * 1024.0,
+                      "the BEM (" + std::to_string(d.num_dofs()) + " dofs, dense matrices)",
+                      "each --refine step doubles the dofs and quadruples the memory");
+  }
   bem::SolveOptions so;
   so.solver = parse_solver(o.solver);
   so.gmres_tolerance = o.gmres_tolerance;
@@ -293,7 +322,10 @@ int run(const Options& o) {
   const fem::Function* exact = problem.exact.get();
   if (exact) {
     j["flux_l2_error"] = bem::flux_l2_error(d, s, *exact);
-    j["flux_l2_error_relative"] = j["flux_l2_error"].get<double>() / bem::flux_l2_norm(d, *exact);
+    // Relative to the exact flux's norm, when it has one (a constant solution has none: no relative error).
+    if (const double norm = bem::flux_l2_norm(d, *exact); norm > 0.0) {
+      j["flux_l2_error_relative"] = j["flux_l2_error"].get<double>() / norm;
+    }
     j["u_l2_error"] = bem::u_l2_error(d, s, *exact);
     log("boundary flux L2 error " + fmt(j["flux_l2_error"].get<double>()) + ", boundary u L2 error " + fmt(j["u_l2_error"].get<double>()));
   }
@@ -364,33 +396,29 @@ int main(int argc, char** argv) {
   std::vector<std::string> backend_list;
   for (const auto& b : basis::backends()) backend_list.push_back(b.name);
   app.add_option("--basis", o.basis, "geometry backend (as iga-poisson): " + basis::backend_names())->check(CLI::IsMember(backend_list))->capture_default_str();
-  app.add_option("--geometry", o.geometry, "bspline without --mesh: quarter-annulus (default) or l-shape");
-  app.add_option("--geometry-refine", o.geometry_refine, "uniform refinement steps of the geometry (its map is unchanged; the BEM takes the boundary sides as curve elements, the FEM of --compare-fem and the interior sampling use its elements); default: the backend's")->check(CLI::Range(0, 10));
-  app.add_option("--degree", o.degree, "degree p of the splines for u and q on the boundary")->check(CLI::Range(1, 8))->capture_default_str();
-  app.add_option("--refine", o.refine, "each boundary curve element is split into 2^K BEM elements")->check(CLI::Range(0, 16))->capture_default_str();
+  app.add_option("--geometry", o.geometry, "bspline without --mesh: quarter-annulus (default) or l-shape")->check(iga::io::non_blank());
+  app.add_option("--geometry-refine", o.geometry_refine, "uniform refinement steps of the geometry (its map is unchanged; the BEM takes the boundary sides as curve elements, the FEM of --compare-fem and the interior sampling use its elements); default: the backend's")->check(iga::io::whole_number(0, 10));
+  app.add_option("--degree", o.degree, "degree p of the splines for u and q on the boundary")->check(iga::io::whole_number(1, 8))->capture_default_str();
+  app.add_option("--refine", o.refine, "each boundary curve element is split into 2^K BEM elements")->check(iga::io::whole_number(0, 16))->capture_default_str();
   app.add_option("--collocation", o.collocation, "greville or maxima (of the B-splines)")->check(CLI::IsMember({"greville", "maxima"}))->capture_default_str();
   app.add_option("--joints", o.joints, "BEM splines across the joints of the boundary curve's elements: smooth (C^(p-1)) or split (discontinuous: full order on curves that are only C2 there, e.g. Catmull–Clark and cubic B-spline boundaries)")->check(CLI::IsMember({"smooth", "split"}))->capture_default_str();
   app.add_option("--solver", o.solver, "auto (LU up to 4000 unknowns, else GMRES), lu or gmres")->check(CLI::IsMember({"auto", "lu", "gmres"}))->capture_default_str();
-  app.add_option("--gmres-tolerance", o.gmres_tolerance, "GMRES: relative residual to reach (beyond ~1000 dofs 1e-12 can leave an error above the discretisation error; 1e-14 is reachable)")->check(CLI::Range(1e-16, 1e-2))->capture_default_str();
-  app.add_option("--exact", o.exact, "exact (harmonic) solution u(x,y): default Dirichlet data and errors; default exp(x)*cos(y) when no data are given");
-  app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact");
-  app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)");
-  app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (as iga-poisson)");
-  app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data");
+  app.add_option("--gmres-tolerance", o.gmres_tolerance, "GMRES: relative residual to reach (beyond ~1000 dofs 1e-12 can leave an error above the discretisation error; 1e-14 is reachable)")->check(iga::io::finite_number(1e-16, 1e-2))->capture_default_str();
+  app.add_option("--exact", o.exact, "exact (harmonic) solution u(x,y): default Dirichlet data and errors; default exp(x)*cos(y) when no data are given")->check(iga::io::non_blank());
+  app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact")->check(iga::io::non_blank());
+  app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)")->check(iga::io::non_blank());
+  app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (as iga-poisson)")->check(iga::io::non_blank());
+  app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data")->check(iga::io::non_blank());
   app.add_flag("--compare-fem", o.compare_fem, "also solve with the FEM on the same geometry and report the difference at the sample points");
-  app.add_option("--grid", o.grid, "interior output on an N × N grid over the bounding box instead of the geometry's sampling")->check(CLI::Range(2, 4000));
-  app.add_option("--vtu-samples", o.samples, "sample points per direction per element (interior) and per BEM element (boundary)")->check(CLI::Range(2, 64))->capture_default_str();
+  app.add_option("--grid", o.grid, "interior output on an N × N grid over the bounding box instead of the geometry's sampling")->check(iga::io::whole_number(2, 4000));
+  app.add_option("--vtu-samples", o.samples, "sample points per direction per element (interior) and per BEM element (boundary)")->check(iga::io::whole_number(2, 64))->capture_default_str();
   app.add_option("--vtu", o.vtu, "interior solution for ParaView ('none' to skip)")->capture_default_str();
   app.add_option("--boundary-vtu", o.boundary_vtu, "boundary u and q as polylines ('none' to skip)")->capture_default_str();
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
-  app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
+  app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(io::finite_number(0.001, 1e6));
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = io::parse_command_line(app, argc, argv, "iga-bem")) return *code;
   if (app.count("--geometry") > 0) o.given.emplace_back("geometry");
-  try {
-    return run(o);
-  } catch (const std::exception& e) {
-    std::cerr << "iga-bem: error: " << e.what() << std::endl;
-    return 1;
-  }
+  return io::run_program("iga-bem", [&] { return run(o); });
 }

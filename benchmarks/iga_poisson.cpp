@@ -2,6 +2,7 @@
 // strong Dirichlet and natural Neumann conditions. Thin: parses options and calls the library.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <algorithm>
@@ -12,9 +13,11 @@
 #include "basis/registry.hpp"
 #include "core/error.hpp"
 #include "fem/expression.hpp"
+#include "fem/memory.hpp"
 #include "fem/poisson.hpp"
 #include "fem/problems.hpp"
 #include "fem/threads.hpp"
+#include "io/program.hpp"
 #include "io/report.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
@@ -34,6 +37,7 @@ struct Options {
   long long max_dofs = 0;
   double theta = 0.5;
   double reaction = 0.0;
+  double max_memory = 0.0;  ///< GiB; 0: what the system has available
   bool quiet = false, mean_zero = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
@@ -76,6 +80,27 @@ int run(const Options& o) {
   basis::BackendFacts facts;
   std::optional<mesh::PolyMesh> net;
   if (!o.mesh.empty()) net = mesh::read_obj(o.mesh);
+  // Size before work: the elements the refinement will make (each step splits every element in four), and the
+  // memory of the solve and the output, against what is available.
+  const bool write_vtu = !o.vtu.empty() && o.vtu != "none";
+  const double max_bytes = o.max_memory * 1024.0 * 1024.0 * 1024.0;
+  auto check_size = [&](double elements, const std::string& what) {
+    fem::check_memory(fem::poisson_memory(elements, (degree + 1) * (degree + 1)) +
+                          (write_vtu ? fem::vtu_memory(elements, o.samples) : 0.0),
+                      max_bytes, what,
+                      "each --refine or --presubdivide step needs four times more" +
+                          (write_vtu ? "; --vtu-samples " + std::to_string(o.samples) + " writes " +
+                                           std::to_string(o.samples * o.samples) + " points per element"
+                                     : std::string()));
+  };
+  {
+    const int pre = o.count("presubdivide") ? o.presubdivide : 0;
+    const double coarse = net ? static_cast<double>(net->num_faces()) : 1.0;
+    const double predicted = coarse * std::pow(4.0, refine_steps + pre);
+    std::ostringstream what;
+    what << "this run (about " << std::setprecision(3) << predicted << " elements after " << refine_steps + pre << " refinement steps)";
+    check_size(predicted, what.str());
+  }
   // --refine-intervals: each step halves only the listed knot intervals, in both directions (refine-and-smooth).
   const std::vector<Index> intervals = parse_intervals(o.refine_intervals);
   refine::Refinement refined =
@@ -85,6 +110,9 @@ int run(const Options& o) {
   }
   for (const std::string& note : facts.notes) log(note);
   const basis::Geometry& geometry = refined.geometry;
+  check_size(static_cast<double>(std::max(geometry.space().num_elements(), geometry.space().num_dofs())),
+             "this run (" + std::to_string(geometry.space().num_elements()) + " elements, " +
+                 std::to_string(geometry.space().num_dofs()) + " dofs)");
   const bool surface = geometry.dim() == 3;
   const auto names = geometry.space().boundary_part_names();
 
@@ -110,7 +138,19 @@ int run(const Options& o) {
   if (!o.dirichlet.empty()) problem.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
   fem::select_neumann(problem, o.neumann, o.neumann_boundary, o.neumann_where, names);
   problem.mean_zero = o.mean_zero;
-  const auto rules = quadrature::make_rule_provider(o.quadrature.empty() ? backend.default_quadrature(degree) : o.quadrature, degree + 1);
+  std::unique_ptr<quadrature::RuleProvider> rules;
+  try {
+    rules = quadrature::make_rule_provider(o.quadrature.empty() ? backend.default_quadrature(degree) : o.quadrature, degree + 1);
+  } catch (const InputError& e) {
+    throw InputError("--quadrature: " + std::string(e.what()));
+  }
+  if (rules->name().rfind("gauss:", 0) == 0 && std::stoi(rules->name().substr(6)) < degree + 1) {
+    // Fewer Gauss points than degree + 1 per direction integrate neither the stiffness nor the boundary mass of
+    // degree-p functions exactly even on affine elements, and leave the latter singular: not an answer to report.
+    throw InputError("--quadrature " + o.quadrature + ": " + rules->name().substr(6) + " points per direction are fewer than degree + 1 = " +
+                     std::to_string(degree + 1) + " (the least that integrates the matrices of degree-" +
+                     std::to_string(degree) + " functions exactly on affine elements)");
+  }
   const fem::SolverOptions solver{fem::parse_solver(o.solver)};
 
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
@@ -120,7 +160,6 @@ int run(const Options& o) {
   fem::PoissonResult r;
   std::optional<basis::Geometry> final_geometry;
   nlohmann::json adaptive_json;
-  const bool write_vtu = !o.vtu.empty() && o.vtu != "none";
   if (o.adaptive >= 0) {
     refine::AdaptiveOptions ao;
     ao.steps = o.adaptive;
@@ -206,6 +245,7 @@ int run(const Options& o) {
   j["solver"] = r.solver;
   j["solver_iterations"] = r.solver_iterations;
   j["residual_norm"] = r.residual_norm;
+  j["residual_tolerance"] = solver.max_residual;
   j["dirichlet_edges"] = r.dirichlet_edges;
   j["neumann_edges"] = r.neumann_edges;
   j["mean_zero"] = r.mean_zero;
@@ -215,8 +255,9 @@ int run(const Options& o) {
   if (r.errors) {
     j["l2_error"] = r.errors->l2;
     j["h1_error"] = r.errors->h1;
-    j["l2_error_relative"] = r.errors->l2 / r.errors->l2_exact;
-    j["h1_error_relative"] = r.errors->h1_exact > 0 ? nlohmann::json(r.errors->h1 / r.errors->h1_exact) : nlohmann::json(nullptr);
+    // Relative errors where the exact solution has a norm to compare with (u = 0 has none: the key is left out).
+    if (r.errors->l2_exact > 0) j["l2_error_relative"] = r.errors->l2 / r.errors->l2_exact;
+    if (r.errors->h1_exact > 0) j["h1_error_relative"] = r.errors->h1 / r.errors->h1_exact;
     log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
   }
   if (write_vtu && o.adaptive < 0) {
@@ -251,42 +292,38 @@ int main(int argc, char** argv) {
     backend_help += " " + b.name + " (" + b.description + ");";
   }
   app.add_option("--basis", o.basis, backend_help)->check(CLI::IsMember(backend_list))->capture_default_str();
-  app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(CLI::Range(1, 12))->capture_default_str();
+  app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(iga::io::whole_number(1, 12))->capture_default_str();
   app.add_option("--refine-intervals", o.refine_intervals, "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
-  app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for polyhedral, where each step is a Catmull–Clark step of the net)")->check(CLI::Range(0, 14));
-  app.add_option("--geometry", o.geometry, "bspline without --mesh: the built-in geometry, quarter-annulus (default) or l-shape ([0,2]^2 minus (1,2]^2, one patch with a C0 line from the reflex corner)");
-  app.add_option("--adaptive", o.adaptive, "adaptive refinement: STEPS rounds of solve, estimate (residual estimator), mark, refine locally (bspline: THB; the --refine steps come first); one .vtu per step plus a .pvd series")->check(CLI::Range(0, 200));
-  app.add_option("--theta", o.theta, "--adaptive: marking parameter in (0, 1]")->check(CLI::Range(1e-6, 1.0))->capture_default_str();
+  app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for polyhedral, where each step is a Catmull–Clark step of the net)")->check(iga::io::whole_number(0, 14));
+  app.add_option("--geometry", o.geometry, "bspline without --mesh: the built-in geometry, quarter-annulus (default) or l-shape ([0,2]^2 minus (1,2]^2, one patch with a C0 line from the reflex corner)")->check(iga::io::non_blank());
+  app.add_option("--adaptive", o.adaptive, "adaptive refinement: STEPS rounds of solve, estimate (residual estimator), mark, refine locally (bspline: THB; the --refine steps come first); one .vtu per step plus a .pvd series")->check(iga::io::whole_number(0, 200));
+  app.add_option("--theta", o.theta, "--adaptive: marking parameter in (0, 1]")->check(iga::io::finite_number(1e-6, 1.0))->capture_default_str();
   app.add_option("--mark", o.mark, "--adaptive: doerfler (bulk) or max")->check(CLI::IsMember({"doerfler", "max"}))->capture_default_str();
-  app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(CLI::NonNegativeNumber);
+  app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(iga::io::whole_number(0, 1000000000000LL));
   app.add_option("--admissibility", o.admissibility, "--adaptive: class m of admissible meshes (>= 2; 0 refines exactly the marked elements)")->check(CLI::IsMember({0, 2, 3, 4, 5, 6}))->capture_default_str();
-  app.add_option("--presubdivide", o.presubdivide, "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes <= 8 admissible)")->check(CLI::Range(0, 6));
+  app.add_option("--presubdivide", o.presubdivide, "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes <= 8 admissible)")->check(iga::io::whole_number(0, 6));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
-  app.add_option("--problem", o.problem, "built-in manufactured problem (" + names + "); default sine when no --source/--exact");
-  app.add_option("--source", o.source, "f(x,y,z) in -Δu + c u = f (muparser expression)");
-  app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact, else 0");
-  app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)");
-  app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0; cc: b<loop>.<segment> between corners; or indices)");
-  app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data, e.g. 'x > 0.999'");
+  app.add_option("--problem", o.problem, "built-in manufactured problem (" + names + "); default sine when no --source/--exact")->check(iga::io::non_blank());
+  app.add_option("--source", o.source, "f(x,y,z) in -Δu + c u = f (muparser expression)")->check(iga::io::non_blank());
+  app.add_option("--dirichlet", o.dirichlet, "u on the Dirichlet boundary, g(x,y,z); default: --exact, else 0")->check(iga::io::non_blank());
+  app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)")->check(iga::io::non_blank());
+  app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0; cc: b<loop>.<segment> between corners; or indices)")->check(iga::io::non_blank());
+  app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data, e.g. 'x > 0.999'")->check(iga::io::non_blank());
   app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
-  app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms");
-  app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms")->check(iga::io::non_blank());
+  app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(iga::io::finite_number(0))->capture_default_str();
   app.add_option("--quadrature", o.quadrature, "quadrature rule: gauss:P (P points per direction) or tiles:P:L (P×P Gauss on each tile of levels 1..L of elements at extraordinary vertices); default gauss:degree+1");
   app.add_option("--solver", o.solver, "cholmod or cg")->capture_default_str();
-  app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();
-  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(CLI::Range(2, 64))->capture_default_str();
+  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
+  app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-poisson")) return *code;
   for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
-  try {
-    return run(o);
-  } catch (const std::exception& e) {
-    std::cerr << "iga-poisson: error: " << e.what() << std::endl;
-    return 1;
-  }
+  return iga::io::run_program("iga-poisson", [&] { return run(o); });
 }

@@ -23,6 +23,7 @@
 #include "basis/catmull_clark/stam.hpp"
 #include "core/error.hpp"
 #include "fem/assembler.hpp"
+#include "io/program.hpp"
 #include "io/report.hpp"
 #include "mesh/obj_reader.hpp"
 #include "quadrature/exact/geometry_integrals.hpp"
@@ -181,10 +182,10 @@ int main(int argc, char** argv) {
   app.add_option("--valence", valence, "mass/stiffness: the single irregular element of this valence (3..16), no mesh");
   app.add_option("--quantity", quantity, "area (planar net), volume (closed net), mass or stiffness (matrices at EVs)")
       ->check(CLI::IsMember({"area", "volume", "mass", "stiffness"}))->capture_default_str();
-  app.add_option("--method", method, "exact, gauss:P, tiles:P:L, macro:R[:L] or fitted[:SPACE][:DIR]")->capture_default_str();
-  app.add_option("--json", json, "JSON report file");
-  CLI11_PARSE(app, argc, argv);
-  try {
+  app.add_option("--method", method, "exact, gauss:P, tiles:P:L, macro:R[:L] or fitted[:SPACE][:DIR]")->check(iga::io::non_blank())->capture_default_str();
+  app.add_option("--json", json, "JSON report file")->check(iga::io::non_blank());
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-quadrature")) return *code;
+  return iga::io::run_program("iga-quadrature", [&] {
     using namespace iga;
     if (quantity == "mass" || quantity == "stiffness") {
       if (app.count("--basis")) throw InputError("--basis is for --quantity area or volume (the matrices are of Catmull–Clark elements)");
@@ -198,18 +199,30 @@ int main(int argc, char** argv) {
     basis::BackendFacts facts;
     const mesh::PolyMesh net = mesh::read_obj(mesh);
     const basis::Geometry g = basis::make_geometry(backend, &net, options, facts);
+    // Notes go out with the result, so that a run that fails says one line only.
+    std::vector<std::string> notes = facts.notes;
     const int degree = basis::degree(backend, options);
     const bool volume = quantity == "volume";
     if (!volume && g.dim() != 2) throw InputError(mesh, 0, "--quantity area needs a planar net (all z = 0)");
     if (volume && !g.space().boundary_edges().empty()) throw InputError(mesh, 0, "--quantity volume needs a closed net");
-    const double exact = volume ? quadrature::exact::exact_volume(g, degree) : quadrature::exact::exact_area(g, degree);
+    double exact = volume ? quadrature::exact::exact_volume(g, degree) : quadrature::exact::exact_area(g, degree);
+    // Orientation: the rules integrate |det J| (area) but the series the signed integrals; a clockwise net
+    // (det J < 0) or a closed net with inward normals is reported with the positive measure and a note.
+    const bool reversed = volume ? exact < 0 : g.orientation() < 0;
+    if (reversed) {
+      notes.push_back("note: " + mesh +
+                      (volume ? ": the normals point inward (faces listed clockwise seen from outside); the enclosed volume is reported positive"
+                              : ": the net is oriented clockwise (det J < 0); the area is reported positive"));
+      exact = -exact;
+    }
     nlohmann::json report = {{"program", "iga-quadrature"}, {"basis", basis}, {"mesh", mesh}, {"quantity", quantity}, {"method", method},
-                             {"elements", g.space().num_elements()}, {"exact", exact}};
+                             {"elements", g.space().num_elements()}, {"exact", exact}, {"reversed_orientation", reversed}};
     Index irregular = 0, ev_points = 0;
     double value = exact;
     if (method != "exact") {
       const auto rules = quadrature::make_rule_provider(method, 4);
       value = integrate(g, *rules, volume);
+      if (volume && reversed) value = -value;
       for (Index e = 0; e < g.space().num_elements(); ++e) {
         const basis::ElementKind k = g.space().kind(e);
         if (k.family == basis::Family::Irregular) {
@@ -227,13 +240,11 @@ int main(int argc, char** argv) {
     }
     report["irregular_elements"] = irregular;
     report["value"] = value;
+    for (const std::string& note : notes) std::cerr << "iga-quadrature: " << note << std::endl;
     std::cout << std::setprecision(17) << quantity << " " << value;
     if (method != "exact") std::cout << "  (error " << std::setprecision(3) << value - exact << ", " << ev_points << " points around EVs)";
     std::cout << std::endl;
     if (!json.empty()) io::write_json(json, report);
     return 0;
-  } catch (const std::exception& e) {
-    std::cerr << "iga-quadrature: error: " << e.what() << std::endl;
-    return 1;
-  }
+  });
 }

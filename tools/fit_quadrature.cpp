@@ -18,6 +18,7 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "io/program.hpp"
 #include "quadrature/moment_fit/fit.hpp"
 #include "quadrature/moment_fit/table.hpp"
 #include "quadrature/per_tile.hpp"
@@ -160,36 +161,52 @@ void run_valence(int n, const Settings& s) {
   std::printf("n=%2d: no rule up to q = %d\n", n, last);
 }
 
+// What CLI11 cannot check option by option: the relations between options.
+void check_settings(const Settings& s) {
+  if (s.min_valence > s.max_valence) {
+    throw iga::InputError("--min-valence " + std::to_string(s.min_valence) + " is above --max-valence " +
+                          std::to_string(s.max_valence) + ": no valence to fit");
+  }
+  if (s.first_points > 0 && s.last_points > 0 && s.first_points > s.last_points) {
+    throw iga::InputError("--first-points " + std::to_string(s.first_points) + " is above --last-points " +
+                          std::to_string(s.last_points) + ": no point count to try");
+  }
+  if (!s.eliminate.empty() && (s.eliminate[0] < 1 || s.eliminate[0] > 64 || s.eliminate[1] < 1 || s.eliminate[1] > 50)) {
+    throw iga::InputError("--eliminate P L: P must be 1..64 and L 1..50");
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Fit moment-fitting quadrature rules for Catmull-Clark elements at an extraordinary vertex"};
   Settings s;
-  app.add_option("--min-valence", s.min_valence, "smallest valence (3..16)");
-  app.add_option("--max-valence", s.max_valence, "largest valence (3..16)");
-  app.add_option("--start", s.start, "first q = n + start");
-  app.add_option("--max-extra", s.max_extra, "last q = n + 4 + max-extra");
-  app.add_option("--first-points", s.first_points, "first q (overrides --start)");
-  app.add_option("--last-points", s.last_points, "last q (overrides --max-extra)");
-  app.add_option("--step", s.step, "q increment")->check(CLI::PositiveNumber);
+  app.add_option("--min-valence", s.min_valence, "smallest valence (3..16)")->check(iga::io::whole_number(3, 16))->capture_default_str();
+  app.add_option("--max-valence", s.max_valence, "largest valence (3..16)")->check(iga::io::whole_number(3, 16))->capture_default_str();
+  app.add_option("--start", s.start, "first q = n + start")->check(iga::io::whole_number(0, 200))->capture_default_str();
+  app.add_option("--max-extra", s.max_extra, "last q = n + 4 + max-extra")->check(iga::io::whole_number(0, 200))->capture_default_str();
+  app.add_option("--first-points", s.first_points, "first q (overrides --start)")->check(iga::io::whole_number(1, 1000));
+  app.add_option("--last-points", s.last_points, "last q (overrides --max-extra)")->check(iga::io::whole_number(1, 1000));
+  app.add_option("--step", s.step, "q increment")->check(iga::io::whole_number(1, 1000))->capture_default_str();
   app.add_option("--eliminate", s.eliminate, "P L: node elimination from the per-tile rule tiles:P:L (then "
                  "--attempts = candidates tried per removal, --first-points = smallest q)")->expected(2);
   app.add_flag("--rank", s.rank, "print the numerical rank of the space per valence instead of fitting");
-  app.add_option("--space", s.space, "phi | mass | stiffness");
-  app.add_option("--output", s.output, "directory for the tables (none: do not write)");
+  app.add_option("--space", s.space, "phi | mass | stiffness")->check(CLI::IsMember({"phi", "mass", "stiffness"}))->capture_default_str();
+  app.add_option("--output", s.output, "directory for the tables (default and none: do not write)")->check(iga::io::non_blank());
   app.add_flag("--survey", s.survey, "run every random start (success rates) instead of stopping at the first");
   app.add_flag("--symmetric", s.symmetric, "only rules symmetric about u = v (all diagonal point counts)");
-  app.add_option("--time-limit", s.time_limit, "seconds per valence");
-  app.add_option("--attempts", s.fit.attempts, "random starts per q");
+  app.add_option("--time-limit", s.time_limit, "seconds per valence")->check(iga::io::finite_number(0))->capture_default_str();
+  app.add_option("--attempts", s.fit.attempts, "random starts per q")->check(iga::io::whole_number(1, 100000))->capture_default_str();
   app.add_option("--seed", s.fit.seed, "random seed (attempt k uses seed + k)");
-  app.add_option("--algorithm", s.fit.algorithm, "NLopt first stage: LD_LBFGS, LD_SLSQP, LD_MMA, LN_BOBYQA, none");
-  app.add_option("--max-evaluations", s.fit.max_evaluations, "NLopt evaluations per start");
-  app.add_option("--polish-iterations", s.fit.polish_iterations, "Levenberg-Marquardt iterations per start");
-  app.add_option("--tolerance", s.fit.tolerance, "convergence: ||Phi w - b|| <= tolerance");
-  app.add_option("--lower-bound", s.fit.lower_bound, "u, v >= lower bound");
-  CLI11_PARSE(app, argc, argv);
-  try {
-    mf::parse_space(s.space);
+  app.add_option("--algorithm", s.fit.algorithm, "NLopt first stage")->check(CLI::IsMember({"LD_LBFGS", "LD_SLSQP", "LD_MMA", "LN_BOBYQA", "none"}))->capture_default_str();
+  app.add_option("--max-evaluations", s.fit.max_evaluations, "NLopt evaluations per start")->check(iga::io::whole_number(1, 100000000))->capture_default_str();
+  app.add_option("--polish-iterations", s.fit.polish_iterations, "Levenberg-Marquardt iterations per start")->check(iga::io::whole_number(0, 100000))->capture_default_str();
+  app.add_option("--tolerance", s.fit.tolerance, "convergence: ||Phi w - b|| <= tolerance")->check(iga::io::finite_number(1e-300, 1.0))->capture_default_str();
+  app.add_option("--lower-bound", s.fit.lower_bound, "u, v >= lower bound")->check(iga::io::finite_number(1e-16, 0.5))->capture_default_str();
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-fit-quadrature")) return *code;
+  if (s.output == "none") s.output.clear();
+  return iga::io::run_program("iga-fit-quadrature", [&] {
+    check_settings(s);
     for (int n = s.min_valence; n <= s.max_valence; ++n) {
       if (s.rank) {
         print_rank(n, s);
@@ -199,9 +216,6 @@ int main(int argc, char** argv) {
         run_valence(n, s);
       }
     }
-  } catch (const iga::Error& e) {
-    std::cerr << "iga-fit-quadrature: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

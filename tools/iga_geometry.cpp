@@ -15,6 +15,9 @@
 #include <CLI/CLI.hpp>
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -23,7 +26,9 @@
 
 #include "basis/registry.hpp"
 #include "core/error.hpp"
+#include "fem/memory.hpp"
 #include "io/bv.hpp"
+#include "io/program.hpp"
 #include "io/report.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
@@ -99,6 +104,14 @@ int run(const Options& o) {
   if (std::find(o.given.begin(), o.given.end(), "presubdivide") != o.given.end()) bo.presubdivide = o.presubdivide;
   bo.degree_raise = o.degree_raise;
   const iga::mesh::PolyMesh net = iga::mesh::read_obj(o.mesh);
+  {
+    // Size before work: --presubdivide multiplies the faces by four per step; the .vtu samples² points each.
+    const double elements = static_cast<double>(net.num_faces()) * std::pow(4.0, bo.presubdivide == iga::basis::BackendOptions::kUnset ? 0 : bo.presubdivide);
+    std::ostringstream what;
+    what << "this geometry (about " << std::setprecision(3) << elements << " elements)";
+    iga::fem::check_memory(1000.0 * elements + (o.vtu.empty() ? 0.0 : iga::fem::vtu_memory(elements, o.samples)), 0.0,
+                           what.str(), "each --presubdivide step needs four times more; --vtu-samples costs its square per element");
+  }
   iga::basis::BackendFacts facts;
   const iga::basis::Geometry geometry = iga::basis::make_geometry(backend, &net, bo, facts);
   for (const std::string& note : facts.notes) log(note);
@@ -155,25 +168,20 @@ int main(int argc, char** argv) {
   app.add_option("--basis", o.basis, "basis backend (" + iga::basis::backend_names() + ")")->check(CLI::IsMember(backend_list))->capture_default_str();
   app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline)")->required()->check(CLI::ExistingFile);
   app.add_option("--presubdivide", o.presubdivide, "Catmull-Clark steps applied to the net first (one makes any net with valences <= 8 admissible for polyhedral)")
-      ->check(CLI::Range(0, 6))->capture_default_str();
-  app.add_option("--degree", o.degree, "bspline: degree per direction")->check(CLI::Range(1, 12))->capture_default_str();
+      ->check(iga::io::whole_number(0, 6))->capture_default_str();
+  app.add_option("--degree", o.degree, "bspline: degree per direction")->check(iga::io::whole_number(1, 12))->capture_default_str();
   app.add_flag("--degree-raise", o.degree_raise, "polyhedral: write every patch as bi-3 (regular bi-2 patches degree-raised)");
-  app.add_option("--vtu", o.vtu, "ParaView output of the limit surface (point data u = 0)");
-  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(CLI::Range(2, 64))->capture_default_str();
-  app.add_option("--bv", o.bv, "BezierView output (kind-5 tensor and kind-3 triangular patches)");
-  app.add_option("--json", o.json, "JSON report: element and patch counts (polyhedral: per configuration and valence, e.g. star5)");
+  app.add_option("--vtu", o.vtu, "ParaView output of the limit surface (point data u = 0)")->check(iga::io::non_blank());
+  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
+  app.add_option("--bv", o.bv, "BezierView output (kind-5 tensor and kind-3 triangular patches)")->check(iga::io::non_blank());
+  app.add_option("--json", o.json, "JSON report: element and patch counts (polyhedral: per configuration and valence, e.g. star5)")->check(iga::io::non_blank());
   app.add_option("--three-valent", o.three_valent, "make a three-valent net from the triangle mesh --mesh: dual (a vertex per triangle) or trisect (edges split in three, corners cut); written to --obj")
       ->check(CLI::IsMember({"dual", "trisect"}));
-  app.add_option("--obj", o.obj, "with --three-valent: the OBJ file of the net");
+  app.add_option("--obj", o.obj, "with --three-valent: the OBJ file of the net")->check(iga::io::non_blank());
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-geometry")) return *code;
   for (const char* option : {"degree", "presubdivide", "degree-raise"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
-  try {
-    return run(o);
-  } catch (const std::exception& e) {
-    std::cerr << "iga-geometry: error: " << e.what() << std::endl;
-    return 1;
-  }
+  return iga::io::run_program("iga-geometry", [&] { return run(o); });
 }
