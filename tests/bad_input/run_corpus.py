@@ -13,11 +13,14 @@ A case (INI section; values are read after placeholder substitution):
     run = iga-poisson --mesh {in}/bom.obj --vtu none --json none --quiet
     exit = 1                          # expected exit code
     stderr = iga-poisson: error: ...  # expected standard error, exactly; several lines: indent continuations
+    stderr_regex = ...                # instead of stderr: one line matching this regular expression (for
+                                      #   figures that depend on the machine, such as the memory available)
     stdin = {in}/curve.json           # optional: file fed to standard input (default: none)
     timeout = 60                      # optional, seconds
     json = {tmp}/r.json               # optional: report to check (exit 0 runs)
     json_checks = domain_measure 1 1e-12   # optional: lines 'key value tolerance' (key a JSON pointer
                                       #   without the leading '/', value a number, or a string with tolerance -)
+    absent = {tmp}/none               # optional: paths that must not exist after the run (one per line)
 Placeholders: {in} = tests/bad_input/inputs, {data} = the repository's data/, {tmp} = a fresh temporary folder
 per case, {src} = the repository root.
 
@@ -92,7 +95,7 @@ def check_json(case, tmp):
             problems.append(f"report has no {key}")
             continue
         if tol == "-":
-            if str(got) != value:
+            if (got if isinstance(got, str) else json.dumps(got)) != value:
                 problems.append(f"{key} = {got!r}, expected {value!r}")
         elif not isinstance(got, (int, float)) or abs(got - float(value)) > float(tol):
             problems.append(f"{key} = {got!r}, expected {value} ± {tol}")
@@ -120,6 +123,8 @@ def run_case(case, exes, memory_mb):
                            preexec_fn=limit, cwd=tmp, env=env)
     except subprocess.TimeoutExpired:
         return [f"no answer within {case.get('timeout', 60)} s (a hang)"], ""
+    except OSError as e:
+        return [f"cannot run {argv[0]}: {e}"], ""
     finally:
         if stdin is not subprocess.DEVNULL:
             stdin.close()
@@ -135,9 +140,17 @@ def run_case(case, exes, memory_mb):
         problems.append("crash output")
     expected = [line.strip() for line in substitute(case.get("stderr", ""), tmp).strip().splitlines()]
     got = [line for line in err.rstrip("\n").split("\n")] if err.strip() else []
-    if got != expected:
+    if "stderr_regex" in case:
+        pattern = substitute(case["stderr_regex"], tmp).strip()
+        if len(got) != 1 or not re.fullmatch(pattern, got[0]):
+            problems.append("stderr does not match:\n      pattern: " + pattern + "\n      got:     " +
+                            "\n               ".join(got))
+    elif got != expected:
         problems.append("stderr differs:\n      expected: " + "\n                ".join(expected) +
                         "\n      got:      " + "\n                ".join(got))
+    for path in substitute(case.get("absent", ""), tmp).split():
+        if os.path.exists(path):
+            problems.append(f"{path} was written")
     if expected_exit == 0 and "json" in case:
         problems += check_json(case, tmp)
     if expected_exit != 0 and "nan" in err.lower().split() and "nan" not in case.get("stderr", "").lower():
@@ -152,7 +165,7 @@ def main():
     ap.add_argument("--only", default="")
     ap.add_argument("--counts", action="store_true", help="print the number of cases per program and class")
     args = ap.parse_args()
-    exes = dict(e.split("=", 1) for e in args.exe)
+    exes = {name: os.path.abspath(path) for name, path in (e.split("=", 1) for e in args.exe)}
     cases = load_cases(args.only)
     if args.counts:
         table = defaultdict(lambda: defaultdict(int))
