@@ -83,7 +83,14 @@ std::string token_text(std::string_view text, std::size_t start) {
     while (end < text.size() && text[end] != '"' && text[end] != '\n' && text[end] != '\r') end += text[end] == '\\' ? 2 : 1;
     end = std::min(end + 1, text.size());
   }
-  std::string token(text.substr(start, std::min<std::size_t>(end - start, 20)));
+  std::string token;
+  for (const char c : text.substr(start, std::min<std::size_t>(end - start, 20))) {
+    if (static_cast<unsigned char>(c) < 0x20U) {  // a line end or tab: shown escaped, the message stays one line
+      token += c == '\n' ? "\\n" : c == '\r' ? "\\r" : c == '\t' ? "\\t" : "?";
+    } else {
+      token += c;
+    }
+  }
   if (end - start > 20) token += "...";
   return "'" + token + "'";
 }
@@ -111,7 +118,8 @@ bool is_nan_or_infinity(const std::string& word) {
   const std::string detail = dash == std::string::npos ? what : what.substr(dash + 3);
   std::size_t end = e.byte == 0 ? 0 : static_cast<std::size_t>(e.byte - 1);
   const bool bad_word = detail.starts_with("invalid literal") || detail.starts_with("invalid number");
-  if (bad_word && end < text.size() && end > 0 && !word_char(text[end])) --end;  // read one past the word
+  // For "tru}" nlohmann has read one past the word; "~" fails on its first character.
+  if (bad_word && end < text.size() && end > 0 && !word_char(text[end]) && word_char(text[end - 1])) --end;
   const std::size_t start = detail.starts_with("invalid string") ? std::min(end, text.size()) : token_start(text, end);
   const std::string where = position(text, start, name);
   const std::string found = token_text(text, start);

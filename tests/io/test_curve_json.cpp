@@ -80,6 +80,14 @@ TEST(CurveJson, NaNIsNamedOnlyWhenItIsThere) {
   EXPECT_EQ(error_of(curve("2", "[0,0,0,1e999,2,2,2]")), "c.json:1:31: number 1e999 is out of range");
 }
 
+TEST(CurveJson, FuzzFindingsStayOneLine) {
+  // libFuzzer (tests/fuzz/fuzz_curve_json.cpp): an invalid literal starting with '~' after a CR was reported as
+  // "invalid literal '<CR>'" (the CR stepped back to, a two-line message); the '~' is the token.
+  EXPECT_EQ(error_of("{\"degree\": 2.0,\r~\"control\": 1}"), "c.json:2:1: invalid literal '~'");
+  EXPECT_EQ(error_of("{\"degree\": 2,\n\t}"), "c.json:2:2: expected a quoted key, found '}'");
+  EXPECT_EQ(error_of("{\"a\": \"x\ty\"}"), "c.json:1:9: line break or tab inside a quoted string (write \\n or \\t)");
+}
+
 TEST(CurveJson, EmptyBinaryAndNotACurve) {
   EXPECT_EQ(error_of(""), "c.json: empty input");
   EXPECT_EQ(error_of(" \r\n\t"), "c.json: empty input");
