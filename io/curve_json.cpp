@@ -104,9 +104,10 @@ std::string expectation(const std::string& what) {
   return "expected a value";
 }
 
-bool is_nan_or_infinity(const std::string& word) {
+bool is_nan_or_infinity(std::string_view word) {
+  if (word.starts_with('-') || word.starts_with('+')) word.remove_prefix(1);
   for (const char* w : {"NaN", "nan", "NAN", "Infinity", "infinity", "inf", "Inf", "INF"}) {
-    if (word == w || word == "-" + std::string(w) || word == "+" + std::string(w)) return true;
+    if (word == w) return true;
   }
   return false;
 }
