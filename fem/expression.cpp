@@ -55,6 +55,16 @@ void Expression::check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& 
 Expression::Expression(std::string text, std::string what, bool allow_normal)
     : text_(std::move(text)), what_(std::move(what)), allow_normal_(allow_normal), id_(next_id++) {
   if (text_.find_first_not_of(" \t") == std::string::npos) throw InputError(what_ + ": empty expression");
+  // A control character (a pasted line break, binary data) would split the quoted text below, and so the one
+  // error line, over several lines: refused first, by position (1-based byte).
+  for (std::size_t k = 0; k < text_.size(); ++k) {
+    const auto byte = static_cast<unsigned char>(text_[k]);
+    if ((byte < 0x20U && byte != '\t') || byte == 0x7FU) {
+      const char* const hex = "0123456789ABCDEF";
+      throw InputError(what_ + ": control character (byte 0x" + hex[byte >> 4U] + hex[byte & 15U] + ") at position " +
+                       std::to_string(k + 1) + " of the expression");
+    }
+  }
   // Quoted in messages up to 60 characters, so that a long expression still gives one short line.
   std::string& quoted = quoted_;
   quoted.assign(1, '\'');

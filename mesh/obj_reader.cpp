@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string_view>
 #include <system_error>
@@ -108,9 +110,96 @@ Index parse_face_vertex(std::string_view token, Index num_vertices, const Where&
   return resolved;
 }
 
+// The rest of a `v` statement: x y z [w ...] (only x y z kept).
+Eigen::Vector3d parse_vertex(Tokens& tokens, const Where& where) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
+    const double value = parse_number(t, where);
+    if (count < 3) {
+      if (!std::isfinite(value)) {
+        where.fail("non-finite coordinate '" + std::string(t) + "'");
+      }
+      p[count] = value;
+    }
+    ++count;
+  }
+  if (count < 3) {
+    where.fail("vertex has " + std::to_string(count) + " coordinates; a vertex needs x y z");
+  }
+  return p;
+}
+
+// The rest of an `f` statement: at least 3 distinct vertices among the num_vertices defined so far.
+std::vector<Index> parse_face(Tokens& tokens, Index num_vertices, std::vector<Index>& sorted, const Where& where) {
+  std::vector<Index> face;
+  for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
+    face.push_back(parse_face_vertex(t, num_vertices, where));
+  }
+  if (face.size() < 3) {
+    where.fail("face has " + std::to_string(face.size()) + " vertices; a face needs at least 3");
+  }
+  sorted.assign(face.begin(), face.end());
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto dup = std::adjacent_find(sorted.begin(), sorted.end()); dup != sorted.end()) {
+    where.fail("vertex " + std::to_string(*dup + 1) + " appears more than once in the face");
+  }
+  return face;
+}
+
+// The next line of `in` without its end: lines end at "\n", "\r\n" or a lone "\r" (old Mac files), counted as
+// an editor counts them. False at the end of the input.
+bool next_line(std::streambuf& in, std::string& line) {
+  line.clear();
+  int c = in.sbumpc();
+  if (c == std::char_traits<char>::eof()) {
+    return false;
+  }
+  while (c != std::char_traits<char>::eof() && c != '\n' && c != '\r') {
+    line.push_back(static_cast<char>(c));
+    c = in.sbumpc();
+  }
+  if (c == '\r' && in.sgetc() == '\n') {
+    in.sbumpc();
+  }
+  return true;
+}
+
+// Refuses bytes that never occur in text: control characters other than tab, vertical tab and form feed (line
+// ends are already gone), and DEL. The column counts characters (UTF-8 continuation bytes are not counted).
+void check_text(std::string_view line, const Where& where) {
+  long column = 0;
+  for (const char ch : line) {
+    const auto byte = static_cast<unsigned char>(ch);
+    if ((byte & 0xC0U) != 0x80U) {
+      ++column;
+    }
+    if ((byte < 0x20U && byte != '\t' && byte != '\v' && byte != '\f') || byte == 0x7FU) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", byte);
+      where.fail("binary data (byte " + std::string(hex) + " at column " + std::to_string(column) +
+                 "); an OBJ file is text");
+    }
+  }
+}
+
+// The first line of the file: a UTF-8 byte-order mark is dropped; UTF-16 (whose every other byte is NUL) is
+// named as such.
+void strip_byte_order_mark(std::string& line, const Where& where) {
+  if (line.starts_with("\xEF\xBB\xBF")) {
+    line.erase(0, 3);
+  } else if (line.starts_with("\xFF\xFE") || line.starts_with("\xFE\xFF")) {
+    where.fail("file is UTF-16 text; save it as UTF-8 or ASCII");
+  }
+}
+
 }  // namespace
 
 PolyMesh read_obj(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError(path, 0, "cannot read (is a directory)");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in.is_open()) {
     throw InputError(path, 0, "cannot open file");
@@ -126,9 +215,13 @@ PolyMesh parse_obj(std::istream& in, const std::string& name) {
   std::string line;
   long line_number = 0;
 
-  while (std::getline(in, line)) {
+  while (next_line(*in.rdbuf(), line)) {
     ++line_number;
     const Where where{name, line_number};
+    if (line_number == 1) {
+      strip_byte_order_mark(line, where);
+    }
+    check_text(line, where);
     std::string_view text(line);
     if (const std::size_t hash = text.find('#'); hash != std::string_view::npos) {
       text = text.substr(0, hash);
@@ -137,44 +230,16 @@ PolyMesh parse_obj(std::istream& in, const std::string& name) {
     const std::string_view keyword = tokens.next();
 
     if (keyword == "v") {
-      Eigen::Vector3d p = Eigen::Vector3d::Zero();
-      int count = 0;
-      for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
-        const double value = parse_number(t, where);
-        if (count < 3) {
-          if (!std::isfinite(value)) {
-            where.fail("non-finite coordinate '" + std::string(t) + "'");
-          }
-          p[count] = value;
-        }
-        ++count;
-      }
-      if (count < 3) {
-        where.fail("vertex has " + std::to_string(count) + " coordinates; a vertex needs x y z");
-      }
-      points.push_back(p);
+      points.push_back(parse_vertex(tokens, where));
       vertex_lines.push_back(line_number);
     } else if (keyword == "f") {
-      const Index num_vertices = static_cast<Index>(points.size());
-      std::vector<Index> face;
-      for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
-        face.push_back(parse_face_vertex(t, num_vertices, where));
-      }
-      if (face.size() < 3) {
-        where.fail("face has " + std::to_string(face.size()) + " vertices; a face needs at least 3");
-      }
-      sorted.assign(face.begin(), face.end());
-      std::sort(sorted.begin(), sorted.end());
-      if (const auto dup = std::adjacent_find(sorted.begin(), sorted.end()); dup != sorted.end()) {
-        where.fail("vertex " + std::to_string(*dup + 1) + " appears more than once in the face");
-      }
-      faces.push_back(std::move(face));
+      faces.push_back(parse_face(tokens, static_cast<Index>(points.size()), sorted, where));
       face_lines.push_back(line_number);
     }
     // Every other statement (vt, vn, g, o, s, usemtl, mtllib, l, p, ...) is not needed for the mesh.
   }
-  if (in.bad()) {
-    throw InputError(name, line_number, "read error");
+  if (line_number == 0) {
+    throw InputError(name, 0, "file is empty");
   }
   if (points.empty()) {
     throw InputError(name, 0, "file has no vertices");

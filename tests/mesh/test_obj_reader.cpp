@@ -162,7 +162,7 @@ TEST(ObjReader, RejectsNonManifoldVertex) {
 }
 
 TEST(ObjReader, RejectsEmptyInput) {
-  expect_error("", 0, "no vertices");
+  expect_error("", 0, "file is empty");
   expect_error("# only a comment\n\n", 0, "no vertices");
 }
 
@@ -175,6 +175,17 @@ TEST(ObjReader, ReadObjMissingFile) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), path + ":0: cannot open file");
+  }
+}
+
+TEST(ObjReader, ReadObjDirectory) {
+  // Issue 14: a directory opens as a stream on Linux and read as an empty file; it is named as a directory.
+  const std::string path = testing::TempDir();
+  try {
+    (void)read_obj(path);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":0: cannot read (is a directory)");
   }
 }
 
@@ -194,10 +205,51 @@ TEST(ObjReader, ReadObjFiles) {
     (void)read_obj(empty);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), empty + ":0: file has no vertices");
+    EXPECT_EQ(std::string(e.what()), empty + ":0: file is empty");
   }
   std::remove(path.c_str());
   std::remove(empty.c_str());
+}
+
+// Issue 14, text encodings: a byte-order mark, CRLF and CR-only line ends are read as an editor shows them;
+// binary data is refused with its line and column.
+TEST(ObjReader, Utf8ByteOrderMarkIsDropped) {
+  // Before the fix the BOM made line 1 an unknown statement: vertex 1 was silently lost.
+  const PolyMesh mesh = parse("\xEF\xBB\xBF" + kSquare + "f 1 2 3 4\n");
+  EXPECT_EQ(mesh.num_vertices(), 4);
+  EXPECT_EQ(mesh.point(0), Eigen::Vector3d(0.0, 0.0, 0.0));
+  expect_error("\xEF\xBB\xBFv 0 0 0\nf 1 2 3\n", 2, "vertex index 2 out of range (1 vertices defined)");
+}
+
+TEST(ObjReader, CrOnlyLineEndsAreLines) {
+  // Before the fix a CR-only file was one line (a comment here: "no vertices").
+  const std::string text = "# old Mac file\rv 0 0 0\rv 1 0 0\rv 1 1 0\rv 0 1 0\rf 1 2 3 4\r";
+  const PolyMesh mesh = parse(text);
+  EXPECT_EQ(mesh.num_vertices(), 4);
+  EXPECT_EQ(mesh.num_faces(), 1);
+  expect_error("v 0 0 0\rv 1 0 0\r\rv 1 x 0\r", 4, "malformed number 'x'");
+}
+
+TEST(ObjReader, MixedLineEndsCountLikeAnEditor) {
+  // \n, \r\n and a lone \r are one line end each; "\r\n" is never two.
+  expect_error("v 0 0 0\r\nv 1 0 0\rv 0 1 0\n\r\n\rf 1 2 9\r\n", 6, "vertex index 9 out of range");
+  const PolyMesh mesh = parse("v 0 0 0\r\nv 1 0 0\rv 0 1 0\nf 1 2 3");
+  EXPECT_EQ(mesh.num_faces(), 1);
+}
+
+TEST(ObjReader, BinaryDataIsRefusedWithLineAndColumn) {
+  expect_error(kSquare + std::string("f 1 2\0 3 4\n", 11), 5, "binary data (byte 0x00 at column 6)");
+  expect_error(kSquare + "# a comment \x01\n", 5, "binary data (byte 0x01 at column 13)");
+  expect_error("v 0 0 0\nv 1 \x7F 0\n", 2, "binary data (byte 0x7F at column 5)");
+  // Columns count characters: "é" is two bytes, one column.
+  expect_error("# caf\xC3\xA9 \x1B\n", 1, "binary data (byte 0x1B at column 8)");
+  // Tab, vertical tab and form feed are blanks, not binary.
+  const PolyMesh mesh = parse("v\t0 0 0\nv 1\v0 0\nv 1 1\f0\nf 1 2 3\n");
+  EXPECT_EQ(mesh.num_faces(), 1);
+}
+
+TEST(ObjReader, Utf16IsNamed) {
+  expect_error(std::string("\xFF\xFEv\0 \0", 6), 1, "UTF-16");
 }
 
 }  // namespace

@@ -103,3 +103,14 @@ TEST(IgaKnots, FailedWritesAreErrors) {
   EXPECT_NE(r.err.find("/dev/full:0: cannot write file"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
+
+TEST(IgaKnots, InputThatIsNotAFile) {
+  // Issue 14: a directory read as an empty string ("not valid JSON ([json.exception.parse_error.101] ...").
+  const std::string dir = fs::temp_directory_path().string();
+  const ProgramRun r = run_program(dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.err, "iga-knots: error: " + dir + ": cannot read (is a directory)\n");
+  const ProgramRun empty = run_program("-", " \n");
+  EXPECT_EQ(empty.code, 1);
+  EXPECT_EQ(empty.err, "iga-knots: error: stdin: empty input\n");
+}
