@@ -197,7 +197,13 @@ nlohmann::json write_grid(const Options& o, const bem::BoundaryDiscretization& d
       g.points.col(i + n * j) = lo + Eigen::Vector2d((i + 0.5) / n * (hi - lo).x(), (j + 0.5) / n * (hi - lo).y());
     }
   }
-  const Eigen::VectorXd u = bem::evaluate_interior(d, s, g.points);
+  Eigen::VectorXd u;
+  try {
+    u = bem::evaluate_interior(d, s, g.points);
+  } catch (const InputError& e) {
+    // A cell centre exactly on the boundary curve (the representation formula does not hold there).
+    throw InputError("--grid " + std::to_string(n) + ": " + e.what() + "; choose another N");
+  }
   bem::Solution one = s;
   one.u.setOnes();
   one.q.setZero();
