@@ -114,6 +114,7 @@ int run(const Options& o) {
              "this run (" + std::to_string(geometry.space().num_elements()) + " elements, " +
                  std::to_string(geometry.space().num_dofs()) + " dofs)");
   const bool surface = geometry.dim() == 3;
+  if (geometry.orientation() < 0) log("note: the planar net is oriented clockwise (det J < 0); solved as it is (the same solution)");
   const auto names = geometry.space().boundary_part_names();
 
   // The problem: a built-in manufactured one, expressions, or both (expressions override).
@@ -221,6 +222,7 @@ int run(const Options& o) {
   j["basis"] = o.basis;
   j["mesh"] = o.mesh.empty() ? "default:" + (o.geometry.empty() ? std::string("quarter-annulus") : o.geometry) : o.mesh;
   j["dimension"] = geometry.dim();
+  j["orientation"] = geometry.orientation();
   j["degree"] = degree;
   j["refine"] = refine_steps;
   j["nested_refinement"] = refined.nested;
