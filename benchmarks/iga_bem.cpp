@@ -47,12 +47,15 @@ struct Options {
 };
 
 // The data as a PoissonProblem (f = 0), so that the boundary split and the FEM comparison are iga-poisson's.
-fem::PoissonProblem make_problem(const Options& o, const std::vector<std::string>& names, std::string& exact_text) {
+fem::PoissonProblem make_problem(const Options& o, const basis::Geometry& geometry, std::string& exact_text) {
+  const std::vector<std::string> names = geometry.space().boundary_part_names();
   fem::PoissonProblem p;
   exact_text = o.exact;
   if (exact_text.empty() && o.dirichlet.empty() && o.neumann.empty()) exact_text = "exp(x)*cos(y)";
   if (!exact_text.empty()) {
-    p.exact = std::make_shared<fem::Expression>(exact_text, "--exact");
+    auto exact = std::make_shared<fem::Expression>(exact_text, "--exact");
+    exact->set_fd_step(fem::finite_difference_step(geometry));  // the exact flux ∇u·n, relative to the domain's size
+    p.exact = exact;
     p.dirichlet = p.exact;
   }
   if (!o.dirichlet.empty()) p.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
@@ -266,10 +269,20 @@ int run(const Options& o) {
   const basis::Geometry& geometry = refined.geometry;
   if (geometry.dim() != 2) throw UnsupportedError("the net is a surface in 3D; the BEM here is for planar domains");
   std::string exact_text;
-  fem::PoissonProblem problem = make_problem(o, geometry.space().boundary_part_names(), exact_text);
+  fem::PoissonProblem problem = make_problem(o, geometry, exact_text);
   const fem::BoundarySplit split = fem::split_boundary(geometry, problem);
   if (!split.neumann.empty() && !problem.neumann) throw InputError("Neumann boundary edges are selected but no Neumann data given");
   const basis::BoundaryTrace trace = basis::trace_geometry(geometry);
+  {
+    // Size before work: H, G, the system matrix and its LU are dense (4 × 8 bytes per entry), and the dofs are at
+    // least the BEM elements (every curve element split into 2^K); the grid output.
+    const double n = static_cast<double>(trace.curve.num_elements()) * std::pow(2.0, o.refine);
+    const double grid = static_cast<double>(o.grid) * o.grid;
+    std::ostringstream what;
+    what << "the BEM (about " << std::setprecision(3) << n << " dofs, dense matrices)";
+    fem::check_memory(32.0 * n * n + 100.0 * grid, o.max_memory * 1024.0 * 1024.0 * 1024.0, what.str(),
+                      "each --refine step doubles the dofs and quadruples the memory");
+  }
   bem::DiscretizationOptions dopt;
   dopt.degree = o.degree;
   dopt.refine = o.refine;
@@ -279,14 +292,6 @@ int run(const Options& o) {
   log("BEM on " + std::to_string(d.num_dofs()) + " dofs, " + std::to_string(d.num_elements()) + " elements on " +
       std::to_string(trace.curve.loops().size()) + " boundary loop(s), " + std::to_string(d.segments().size()) +
       " segment(s); " + std::to_string(fem::num_threads()) + " threads");
-  {
-    // Size before work: H, G, the system matrix and its LU are dense (4 × 8 bytes per entry); the grid output.
-    const double n = static_cast<double>(d.num_dofs());
-    const double grid = static_cast<double>(o.grid) * o.grid;
-    fem::check_memory(32.0 * n * n + 100.0 * grid, o.max_memory * 1024.0 * 1024.0 * 1024.0,
-                      "the BEM (" + std::to_string(d.num_dofs()) + " dofs, dense matrices)",
-                      "each --refine step doubles the dofs and quadruples the memory");
-  }
   bem::SolveOptions so;
   so.solver = parse_solver(o.solver);
   so.gmres_tolerance = o.gmres_tolerance;

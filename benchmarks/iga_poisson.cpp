@@ -121,7 +121,18 @@ int run(const Options& o) {
   fem::PoissonProblem problem;
   problem.reaction = o.reaction;
   std::string problem_name = o.problem;
-  if (problem_name.empty() && o.source.empty() && o.exact.empty()) problem_name = "sine";
+  // A built-in problem's source, exact solution and Dirichlet data belong together: replacing one of them would
+  // report errors against a function that no longer solves the problem.
+  if (!o.problem.empty() && (!o.source.empty() || !o.exact.empty() || !o.dirichlet.empty())) {
+    throw InputError("--problem " + o.problem + " brings its own source, exact solution and Dirichlet data: give "
+                     "either --problem or --source/--exact/--dirichlet, not both");
+  }
+  if (problem_name.empty() && o.source.empty() && o.exact.empty()) {
+    if (!o.dirichlet.empty()) {
+      throw InputError("--dirichlet without --source: give the source (and --exact for error norms), or use --problem");
+    }
+    problem_name = "sine";
+  }
   std::shared_ptr<const fem::Function> builtin_exact;
   if (!problem_name.empty()) {
     if (surface) throw UnsupportedError("--problem " + problem_name + ": built-in problems are for planar domains; give --source and --exact for surfaces");
@@ -133,7 +144,9 @@ int run(const Options& o) {
   }
   if (!o.source.empty()) problem.source = std::make_shared<fem::Expression>(o.source, "--source");
   if (!o.exact.empty()) {
-    problem.exact = std::make_shared<fem::Expression>(o.exact, "--exact");
+    auto exact = std::make_shared<fem::Expression>(o.exact, "--exact");
+    exact->set_fd_step(fem::finite_difference_step(geometry));  // its gradient: the H1 error, Neumann data
+    problem.exact = exact;
     if (o.dirichlet.empty()) problem.dirichlet = problem.exact;
   }
   if (!o.dirichlet.empty()) problem.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");

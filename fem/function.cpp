@@ -1,10 +1,15 @@
 #include "fem/function.hpp"
 
+#include <cmath>
+
+#include "core/error.hpp"
+
 namespace iga::fem {
 
-void Function::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const {
-  // Fourth-order central difference: f'(x) ≈ (f(x-2h) - 8 f(x-h) + 8 f(x+h) - f(x+2h)) / (12 h).
-  const double h = fd_step_;
+namespace {
+// Fourth-order central difference of f at the columns of x with step h per coordinate:
+// f'(x) ≈ (f(x-2h) - 8 f(x-h) + 8 f(x+h) - f(x+2h)) / (12 h).
+void central_difference(const Function& f, const Eigen::Matrix3Xd& x, double h, Eigen::Matrix3Xd& out) {
   const Eigen::Index q = x.cols();
   out.resize(3, q);
   Eigen::Matrix3Xd shifted(3, q);
@@ -12,14 +17,40 @@ void Function::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const
   for (int c = 0; c < 3; ++c) {
     shifted = x;
     shifted.row(c).array() -= 2 * h;
-    values(shifted, fm2);
+    f.values(shifted, fm2);
     shifted.row(c).array() += h;
-    values(shifted, fm1);
+    f.values(shifted, fm1);
     shifted.row(c).array() += 2 * h;
-    values(shifted, fp1);
+    f.values(shifted, fp1);
     shifted.row(c).array() += h;
-    values(shifted, fp2);
+    f.values(shifted, fp2);
     out.row(c) = ((fm2 - 8.0 * fm1 + 8.0 * fp1 - fp2) / (12.0 * h)).transpose();
+  }
+}
+}  // namespace
+
+void Function::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const {
+  try {
+    central_difference(*this, x, fd_step_, out);
+    return;
+  } catch (const InputError&) {
+    // A shifted point left the function's domain (sqrt(x) near x = 0, where the domain ends): point by point,
+    // halve the step until the stencil stays where the function is defined; a point where it never does (or
+    // the function itself is not finite) gets the error of that point.
+  }
+  out.resize(3, x.cols());
+  Eigen::Matrix3Xd one(3, 1), g;
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    one.col(0) = x.col(k);
+    for (double h = fd_step_;; h *= 0.5) {
+      try {
+        central_difference(*this, one, h, g);
+        out.col(k) = g.col(0);
+        break;
+      } catch (const InputError&) {
+        if (h < fd_step_ * 1e-6) throw;
+      }
+    }
   }
 }
 
@@ -59,6 +90,12 @@ class NormalFlux final : public BoundaryFunction {
   std::shared_ptr<const Function> u_;
 };
 }  // namespace
+
+double finite_difference_step(const basis::Geometry& geometry) {
+  const Eigen::MatrixXd& p = geometry.control_points();
+  const double extent = p.rows() > 0 ? (p.colwise().maxCoeff() - p.colwise().minCoeff()).maxCoeff() : 0.0;
+  return extent > 0.0 && std::isfinite(extent) ? 1e-3 * extent : 1e-3;
+}
 
 std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad) {
   return std::make_shared<PointwiseFunction>(std::move(f), std::move(grad));

@@ -1,6 +1,8 @@
 #pragma once
 // Scalar fields of the physical position, evaluated in batches: sources, boundary data, exact solutions.
 #include <Eigen/Core>
+
+#include "basis/geometry.hpp"
 #include <functional>
 #include <memory>
 
@@ -17,7 +19,8 @@ class Function {
   virtual void gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const;
   /// True when gradients() is exact (closed form), false when it is a finite difference.
   virtual bool exact_gradient() const { return false; }
-  /// Step of the default finite-difference gradient (physical units); 1e-3 suits domains of size ~1.
+  /// Step of the default finite-difference gradient (physical units); 1e-3 suits domains of size ~1, and
+  /// finite_difference_step(geometry) gives the step for any other (the same relative to the domain's size).
   double fd_step() const { return fd_step_; }
   void set_fd_step(double h) { fd_step_ = h; }
 
@@ -29,6 +32,10 @@ using PointFunction = std::function<double(const Eigen::Vector3d&)>;
 using PointGradient = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 
 /// A Function from a point-wise callable, with an optional closed-form gradient.
+/// 1e-3 × the largest extent of the geometry's control points: the finite-difference step that is to a domain of
+/// any size (units of 1e-100 or 1e100) what 1e-3 is to the unit square.
+double finite_difference_step(const basis::Geometry& geometry);
+
 std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad = {});
 /// The constant c (gradient 0).
 std::shared_ptr<Function> constant_function(double c);

@@ -261,7 +261,13 @@ SplineCurve parse_curve_json(const std::string& text_in, const std::string& name
   }
   for (const auto& item : j.items()) {
     if (item.key() != "degree" && item.key() != "knots" && item.key() != "control_points") {
-      throw InputError(name + ": unknown key '" + item.key() + "' (a curve has degree, knots, control_points)");
+      // The key as decoded may hold line ends ("\n" in the file) and be long: escaped and cut, one short line.
+      std::string key;
+      for (const char c : item.key().substr(0, 40)) {
+        key += c == '\n' ? "\\n" : c == '\r' ? "\\r" : c == '\t' ? "\\t" : static_cast<unsigned char>(c) < 0x20U ? "?" : std::string(1, c);
+      }
+      if (item.key().size() > 40) key += "...";
+      throw InputError(name + ": unknown key '" + key + "' (a curve has degree, knots, control_points)");
     }
   }
   for (const char* key : {"degree", "knots", "control_points"}) {
@@ -276,6 +282,12 @@ SplineCurve parse_curve_json(const std::string& text_in, const std::string& name
     c.knots.push_back(read_number(knots[i], name + ": knots[" + std::to_string(i) + "]"));
   }
   c.control_points = read_control_points(j["control_points"], name);
+  // Knot insertion divides by knot differences: a span beyond the largest double overflows them (±1e308 knots
+  // gave null or wrong control points with exit 0).
+  if (!c.knots.empty() && !std::isfinite(c.knots.back() - c.knots.front())) {
+    throw InputError(name + ": the knots run from " + shown(knots.front()) + " to " + shown(knots.back()) +
+                     ": their differences overflow a double; rescale them (the curve does not change)");
+  }
   try {
     basis::bspline::validate(c);
   } catch (const InputError& e) {

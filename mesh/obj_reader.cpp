@@ -39,6 +39,12 @@ class Tokens {
   std::string_view rest_;
 };
 
+// A token as quoted in a message: at most 40 characters, so that a 10-million-digit number still gives one
+// short line.
+std::string shown(std::string_view token) {
+  return token.size() <= 40 ? std::string(token) : std::string(token.substr(0, 37)) + "...";
+}
+
 // Error for the current line of the current file.
 struct Where {
   const std::string& name;
@@ -54,10 +60,10 @@ double parse_number(std::string_view token, const Where& where) {
   double value = 0.0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (ec == std::errc::result_out_of_range) {
-    where.fail("number '" + std::string(token) + "' is out of range");
+    where.fail("number '" + shown(token) + "' is out of range");
   }
   if (ec != std::errc{} || end != digits.data() + digits.size()) {
-    where.fail("malformed number '" + std::string(token) + "'");
+    where.fail("malformed number '" + shown(token) + "'");
   }
   return value;
 }
@@ -76,7 +82,7 @@ bool parse_integer(std::string_view text, Index& value) {
 
 // One face vertex token (i, i/j, i//k, i/j/k): returns the 0-based vertex index it refers to.
 Index parse_face_vertex(std::string_view token, Index num_vertices, const Where& where) {
-  const auto malformed = [&] { where.fail("malformed face vertex '" + std::string(token) + "'"); };
+  const auto malformed = [&] { where.fail("malformed face vertex '" + shown(token) + "'"); };
   const std::size_t slash = token.find('/');
   const std::string_view vertex_part = token.substr(0, slash);
   Index unused = 0;
@@ -118,7 +124,7 @@ Eigen::Vector3d parse_vertex(Tokens& tokens, const Where& where) {
     const double value = parse_number(t, where);
     if (count < 3) {
       if (!std::isfinite(value)) {
-        where.fail("non-finite coordinate '" + std::string(t) + "'");
+        where.fail("non-finite coordinate '" + shown(t) + "'");
       }
       p[count] = value;
     }

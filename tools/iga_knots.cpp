@@ -68,6 +68,9 @@ int main(int argc, char** argv) {
     } else {
       fine = iga::refine::refine_smooth(curve, xs);
     }
+    if (!fine.control_points.allFinite()) {
+      throw iga::NumericalError("the refined control points are not finite (the knots' scale overflows); rescale the knots");
+    }
     const std::string result = to_json(fine).dump(1) + "\n";
     iga::io::write_text(out.empty() ? "-" : out, result);  // every write checked (a full disk, /dev/full)
     return 0;

@@ -86,6 +86,11 @@ TEST(CurveJson, FuzzFindingsStayOneLine) {
   EXPECT_EQ(error_of("{\"degree\": 2.0,\r~\"control\": 1}"), "c.json:2:1: invalid literal '~'");
   EXPECT_EQ(error_of("{\"degree\": 2,\n\t}"), "c.json:2:2: expected a quoted key, found '}'");
   EXPECT_EQ(error_of("{\"a\": \"x\ty\"}"), "c.json:1:9: line break or tab inside a quoted string (write \\n or \\t)");
+  // The 10-minute run: a key written with the escape \n decodes to a line break, which the "unknown key" message
+  // quoted as it was (two lines). Escaped and cut at 40 characters now.
+  EXPECT_EQ(error_of("{\"degree7]1]g\\no 04\": 3}"), "c.json: unknown key 'degree7]1]g\\no 04' (a curve has degree, knots, control_points)");
+  EXPECT_EQ(error_of("{\"" + std::string(100, 'k') + "\": 3}"),
+            "c.json: unknown key '" + std::string(40, 'k') + "...' (a curve has degree, knots, control_points)");
 }
 
 TEST(CurveJson, EmptyBinaryAndNotACurve) {
