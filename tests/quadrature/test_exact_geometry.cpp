@@ -117,6 +117,7 @@ void opensubdiv_volume(const iga::mesh::PolyMesh& m, int level, double& vol) {
       desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(Sdc::SCHEME_CATMARK, sdc)));
   Far::PatchTableFactory::Options po(level);
   po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+  po.SetPatchPrecision<double>();  // the local-point stencils are read as double below (OpenSubdiv asserts the match)
   po.useInfSharpPatch = true;
   refiner->RefineAdaptive(po.GetRefineAdaptiveOptions());
   std::unique_ptr<Far::PatchTable> table(Far::PatchTableFactory::Create(*refiner, po));
