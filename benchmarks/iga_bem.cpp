@@ -24,6 +24,7 @@
 #include "fem/poisson.hpp"
 #include "fem/threads.hpp"
 #include "io/program.hpp"
+#include "io/progress.hpp"
 #include "io/report.hpp"
 #include "io/sampled_writer.hpp"
 #include "io/vtu_writer.hpp"
@@ -43,6 +44,7 @@ struct Options {
   int degree = 2, refine = 2, geometry_refine = -1, grid = 0, samples = 4, threads = 0;
   bool compare_fem = false, quiet = false;
   std::vector<std::string> given;
+  nlohmann::json run_info;  ///< io::run_info: version, revision, every effective setting
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
 
@@ -244,6 +246,7 @@ int run(const Options& o) {
     if (!o.quiet) std::cerr << "iga-bem: " << s << std::endl;
   };
   if (o.threads > 0) fem::set_num_threads(o.threads);
+  io::Progress progress("iga-bem", o.quiet);
   const basis::Backend& backend = basis::backend(o.basis);
   basis::check_options(backend, o.given);
   basis::BackendOptions bo;
@@ -295,12 +298,13 @@ int run(const Options& o) {
   bem::SolveOptions so;
   so.solver = parse_solver(o.solver);
   so.gmres_tolerance = o.gmres_tolerance;
-  const bem::Solution s = bem::solve(d, bem::Problem{problem.dirichlet, problem.neumann, problem.exact}, so);
+  const bem::Solution s = progress.phase("BEM assembly and solve", [&] {
+    return bem::solve(d, bem::Problem{problem.dirichlet, problem.neumann, problem.exact}, so);
+  });
   log("assembly " + fmt(s.assembly_seconds) + " s, solve " + fmt(s.solve_seconds) + " s (" + s.solver +
       "), condition estimate " + fmt(s.condition_estimate));
 
-  nlohmann::json j;
-  j["program"] = "iga-bem";
+  nlohmann::json j = o.run_info;
   j["basis"] = o.basis;
   j["mesh"] = o.mesh.empty() ? "default:" + (o.geometry.empty() ? std::string("quarter-annulus") : o.geometry) : o.mesh;
   j["geometry_refine"] = steps;
@@ -352,7 +356,9 @@ int run(const Options& o) {
   if (o.grid == 0 || o.compare_fem) {
     const auto ref = [&](basis::Shape shape) { return io::sample_points(shape, o.samples); };
     std::vector<std::vector<char>> on_boundary;
-    const std::vector<Eigen::VectorXd> bem_u = bem::sample_on_geometry(geometry, *trace.space, d, s, ref, &on_boundary);
+    const std::vector<Eigen::VectorXd> bem_u = progress.phase("interior evaluation", [&] {
+      return bem::sample_on_geometry(geometry, *trace.space, d, s, ref, &on_boundary);
+    });
     Index points = 0;
     for (const auto& v : bem_u) points += v.size();
     std::optional<std::vector<Eigen::VectorXd>> ex;
@@ -370,14 +376,14 @@ int run(const Options& o) {
         const io::ElementField field = [&](Index e, const Eigen::Matrix2Xd&, const Eigen::Matrix3Xd&, Eigen::VectorXd& out) {
           out = bem_u[static_cast<std::size_t>(e)];
         };
-        io::write_vtu(o.vtu, geometry, field, vo);
+        progress.phase("output", [&] { io::write_vtu(o.vtu, geometry, field, vo); });
       }
     }
     if (o.compare_fem) {
       const int fem_degree = basis::degree(backend, bo);
       const auto rules = quadrature::make_rule_provider(backend.default_quadrature(fem_degree), fem_degree + 1);
       problem.mean_zero = split.dirichlet.empty();
-      const fem::PoissonResult r = fem::solve_poisson(geometry, *rules, problem);
+      const fem::PoissonResult r = progress.phase("FEM comparison", [&] { return fem::solve_poisson(geometry, *rules, problem); });
       const std::vector<Eigen::VectorXd> fem_u = fem_samples(geometry, r.u, o.samples);
       const double shift = problem.mean_zero ? mean_difference(bem_u, fem_u) : 0.0;
       j["compare_fem"] = {{"dofs", r.dofs}, {"elements", r.elements}, {"points", points},
@@ -394,7 +400,9 @@ int run(const Options& o) {
   }
   if (o.vtu != "none") j["vtu"] = o.vtu;
   j["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-  if (o.json != "none") io::write_json(o.json, j);
+  j["phase_seconds"] = progress.json();
+  if (io::writes(o.json)) io::write_json(o.json, j);
+  progress.print_table();
   return 0;
 }
 
@@ -403,7 +411,7 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   CLI::App app{"iga-bem: Laplace's equation by collocation IgA-BEM on the boundary of an isogeometric geometry"};
   Options o;
-  app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (planar); default: the embedded bspline geometry")->check(CLI::ExistingFile);
+  app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (planar); default: the embedded bspline geometry")->check(iga::io::input_file());
   std::vector<std::string> backend_list;
   for (const auto& b : basis::backends()) backend_list.push_back(b.name);
   app.add_option("--basis", o.basis, "geometry backend (as iga-poisson): " + basis::backend_names())->check(CLI::IsMember(backend_list))->capture_default_str();
@@ -428,8 +436,11 @@ int main(int argc, char** argv) {
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(io::finite_number(0.001, 1e6));
-  app.add_flag("--quiet", o.quiet, "no progress on stderr");
-  if (const auto code = io::parse_command_line(app, argc, argv, "iga-bem")) return *code;
+  io::CommonOptions common{"iga-bem"};
+  io::add_common_options(app, common);
+  if (const auto code = io::parse_command_line(app, argc, argv, common)) return *code;
+  o.quiet = common.quiet;
+  o.run_info = io::run_info(app, common.program);
   if (app.count("--geometry") > 0) o.given.emplace_back("geometry");
   return io::run_program("iga-bem", [&] { return run(o); });
 }

@@ -40,6 +40,7 @@ struct Options {
   double max_memory = 0.0;  ///< GiB; 0: what the system has available
   bool quiet = false, mean_zero = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
+  nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
 
@@ -134,6 +135,7 @@ int run(const Options& o) {
     problem_name = "sine";
   }
   std::shared_ptr<const fem::Function> builtin_exact;
+  std::pair<std::string, std::string> builtin_text;  ///< the built-in problem's exact solution and source as text
   if (!problem_name.empty()) {
     if (surface) throw UnsupportedError("--problem " + problem_name + ": built-in problems are for planar domains; give --source and --exact for surfaces");
     const fem::ManufacturedProblem mp = fem::manufactured_problem(problem_name, o.reaction);
@@ -141,6 +143,7 @@ int run(const Options& o) {
     problem.exact = mp.exact;
     problem.dirichlet = mp.exact;
     builtin_exact = mp.exact;
+    builtin_text = {mp.exact_expression, mp.source_expression};
   }
   if (!o.source.empty()) problem.source = std::make_shared<fem::Expression>(o.source, "--source");
   if (!o.exact.empty()) {
@@ -230,8 +233,7 @@ int run(const Options& o) {
   };
   log("assembly " + fmt(r.assembly_seconds) + " s, solve " + fmt(r.solve_seconds) + " s (" + r.solver + ")");
 
-  nlohmann::json j;
-  j["program"] = "iga-poisson";
+  nlohmann::json j = o.run_info;
   j["basis"] = o.basis;
   j["mesh"] = o.mesh.empty() ? "default:" + (o.geometry.empty() ? std::string("quarter-annulus") : o.geometry) : o.mesh;
   j["dimension"] = geometry.dim();
@@ -243,8 +245,10 @@ int run(const Options& o) {
   if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
   for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
-                  {"source", o.source}, {"dirichlet", o.dirichlet}, {"neumann", o.neumann},
-                  {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where}, {"exact", o.exact},
+                  {"source", o.source.empty() ? builtin_text.second : o.source},
+                  {"dirichlet", o.dirichlet.empty() ? (o.exact.empty() ? builtin_text.first : o.exact) : o.dirichlet},
+                  {"neumann", o.neumann}, {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where},
+                  {"exact", o.exact.empty() ? builtin_text.first : o.exact},
                   {"reaction", o.reaction}, {"mean_zero", o.mean_zero}};
   j["dofs"] = r.dofs;
   j["free_dofs"] = r.free_dofs;
@@ -299,7 +303,7 @@ int main(int argc, char** argv) {
   CLI::App app{"iga-poisson: solve -Δu + c u = f (Laplace–Beltrami on surfaces) with isogeometric elements"};
   Options o;
   app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline); default: the embedded quarter annulus")
-      ->check(CLI::ExistingFile);
+      ->check(iga::io::input_file());
   std::vector<std::string> backend_list;
   std::string backend_help = "basis backend:";
   for (const auto& b : iga::basis::backends()) {
@@ -335,8 +339,11 @@ int main(int argc, char** argv) {
   app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
-  app.add_flag("--quiet", o.quiet, "no progress on stderr");
-  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-poisson")) return *code;
+  iga::io::CommonOptions common{"iga-poisson"};
+  iga::io::add_common_options(app, common);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  o.quiet = common.quiet;
+  o.run_info = iga::io::run_info(app, common.program);
   for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }

@@ -138,7 +138,7 @@ std::vector<StamElement> stam_elements(const std::string& mesh, int valence, Eig
 }
 
 int run_matrices(const std::string& mesh, int valence, const std::string& quantity, const std::string& method,
-                 const std::string& json) {
+                 const std::string& json, nlohmann::json report, bool quiet) {
   using namespace iga;
   if (mesh.empty() == (valence == 0)) throw InputError("--quantity " + quantity + " needs exactly one of --mesh and --valence");
   if (valence != 0 && (valence < 3 || valence > 16)) throw InputError("--valence must be 3..16, got " + std::to_string(valence));
@@ -149,21 +149,23 @@ int run_matrices(const std::string& mesh, int valence, const std::string& quanti
   const MatrixComparison c = compare_matrices(elements, size, quantity == "stiffness", rules.get());
   const double max_abs = (c.by_rule - c.exact).cwiseAbs().maxCoeff();
   const double rel = (c.by_rule - c.exact).norm() / c.exact.norm();
-  nlohmann::json report = {{"program", "iga-quadrature"}, {"quantity", quantity}, {"method", method},
-                           {"irregular_elements", c.elements}, {"matrix_size", size},
-                           {"exact_frobenius", c.exact.norm()}, {"max_abs_error", max_abs},
-                           {"relative_frobenius_error", rel}, {"relative_error", rel},
-                           {"points_around_evs", c.points},
-                           {"points_per_irregular_element", c.elements ? c.points / c.elements : 0}};
+  report.update({{"quantity", quantity}, {"method", method},
+                 {"irregular_elements", c.elements}, {"matrix_size", size},
+                 {"exact_frobenius", c.exact.norm()}, {"max_abs_error", max_abs},
+                 {"relative_frobenius_error", rel}, {"relative_error", rel},
+                 {"points_around_evs", c.points},
+                 {"points_per_irregular_element", c.elements ? c.points / c.elements : 0}});
   if (mesh.empty()) {
     report["valence"] = valence;
   } else {
     report["mesh"] = mesh;
   }
-  std::cout << quantity << " matrix " << size << " x " << size << " over " << c.elements << " element(s): max-abs error "
-            << std::setprecision(3) << max_abs << ", relative Frobenius error " << rel << ", " << c.points
-            << " points around EVs" << std::endl;
-  if (!json.empty()) io::write_json(json, report);
+  if (io::writes(json)) io::write_json(json, report);
+  if (!quiet) {
+    std::cerr << "iga-quadrature: " << quantity << " matrix " << size << " x " << size << " over " << c.elements
+              << " element(s): max-abs error " << std::setprecision(3) << max_abs << ", relative Frobenius error " << rel
+              << ", " << c.points << " points around EVs" << std::endl;
+  }
   return 0;
 }
 
@@ -178,18 +180,21 @@ int main(int argc, char** argv) {
   for (const auto& b : iga::basis::backends()) backend_list.push_back(b.name);
   app.add_option("--basis", basis, "area/volume: basis backend (" + iga::basis::backend_names() + ")")
       ->check(CLI::IsMember(backend_list))->capture_default_str();
-  app.add_option("--mesh", mesh, "control net (OBJ); required for area and volume")->check(CLI::ExistingFile);
+  app.add_option("--mesh", mesh, "control net (OBJ); required for area and volume")->check(iga::io::input_file());
   app.add_option("--valence", valence, "mass/stiffness: the single irregular element of this valence (3..16), no mesh");
   app.add_option("--quantity", quantity, "area (planar net), volume (closed net), mass or stiffness (matrices at EVs)")
       ->check(CLI::IsMember({"area", "volume", "mass", "stiffness"}))->capture_default_str();
   app.add_option("--method", method, "exact, gauss:P, tiles:P:L, macro:R[:L] or fitted[:SPACE][:DIR]")->check(iga::io::non_blank())->capture_default_str();
-  app.add_option("--json", json, "JSON report file")->check(iga::io::non_blank());
-  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-quadrature")) return *code;
+  app.add_option("--json", json, "JSON report file ('-': standard output; default or 'none': no report)")->check(iga::io::non_blank());
+  iga::io::CommonOptions common{"iga-quadrature"};
+  iga::io::add_common_options(app, common);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  const nlohmann::json info = iga::io::run_info(app, common.program);
   return iga::io::run_program("iga-quadrature", [&] {
     using namespace iga;
     if (quantity == "mass" || quantity == "stiffness") {
       if (app.count("--basis")) throw InputError("--basis is for --quantity area or volume (the matrices are of Catmull–Clark elements)");
-      return run_matrices(mesh, valence, quantity, method, json);
+      return run_matrices(mesh, valence, quantity, method, json, info, common.quiet);
     }
     if (mesh.empty()) throw InputError("--quantity " + quantity + " needs --mesh");
     if (valence != 0) throw InputError("--valence is only for --quantity mass or stiffness");
@@ -215,8 +220,9 @@ int main(int argc, char** argv) {
                               : ": the net is oriented clockwise (det J < 0); the area is reported positive"));
       exact = -exact;
     }
-    nlohmann::json report = {{"program", "iga-quadrature"}, {"basis", basis}, {"mesh", mesh}, {"quantity", quantity}, {"method", method},
-                             {"elements", g.space().num_elements()}, {"exact", exact}, {"reversed_orientation", reversed}};
+    nlohmann::json report = info;
+    report.update({{"basis", basis}, {"mesh", mesh}, {"quantity", quantity}, {"method", method},
+                   {"elements", g.space().num_elements()}, {"exact", exact}, {"reversed_orientation", reversed}});
     Index irregular = 0, ev_points = 0;
     double value = exact;
     if (method != "exact") {
@@ -240,11 +246,13 @@ int main(int argc, char** argv) {
     }
     report["irregular_elements"] = irregular;
     report["value"] = value;
-    for (const std::string& note : notes) std::cerr << "iga-quadrature: " << note << std::endl;
-    std::cout << std::setprecision(17) << quantity << " " << value;
-    if (method != "exact") std::cout << "  (error " << std::setprecision(3) << value - exact << ", " << ev_points << " points around EVs)";
-    std::cout << std::endl;
-    if (!json.empty()) io::write_json(json, report);
+    if (io::writes(json)) io::write_json(json, report);
+    if (!common.quiet) {
+      for (const std::string& note : notes) std::cerr << "iga-quadrature: " << note << std::endl;
+      std::cerr << "iga-quadrature: " << std::setprecision(17) << quantity << " " << value;
+      if (method != "exact") std::cerr << "  (error " << std::setprecision(3) << value - exact << ", " << ev_points << " points around EVs)";
+      std::cerr << std::endl;
+    }
     return 0;
   });
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "core/error.hpp"
 
@@ -17,6 +18,10 @@ std::vector<std::string> manufactured_problem_names() { return {"sine", "harmoni
 ManufacturedProblem manufactured_problem(const std::string& name, double c) {
   ManufacturedProblem p;
   p.name = name;
+  std::ostringstream cs;  // c exactly (17 significant digits) for the expressions
+  cs.precision(17);
+  cs << c;
+  const std::string ct = cs.str();
   if (name == "sine") {
     p.description = "u = sin(pi x) sin(pi y)";
     p.exact = make_function([](const V& x) { return std::sin(kPi * x(0)) * std::sin(kPi * x(1)); },
@@ -25,6 +30,8 @@ ManufacturedProblem manufactured_problem(const std::string& name, double c) {
                                       kPi * std::sin(kPi * x(0)) * std::cos(kPi * x(1)), 0.0};
                             });
     p.source = make_function([c](const V& x) { return (2 * kPi * kPi + c) * std::sin(kPi * x(0)) * std::sin(kPi * x(1)); });
+    p.exact_expression = "sin(pi*x)*sin(pi*y)";
+    p.source_expression = "(2*pi^2 + " + ct + ")*sin(pi*x)*sin(pi*y)";
   } else if (name == "harmonic") {
     p.description = "u = exp(x) sin(y) (harmonic)";
     p.exact = make_function([](const V& x) { return std::exp(x(0)) * std::sin(x(1)); },
@@ -32,11 +39,15 @@ ManufacturedProblem manufactured_problem(const std::string& name, double c) {
                               return {std::exp(x(0)) * std::sin(x(1)), std::exp(x(0)) * std::cos(x(1)), 0.0};
                             });
     p.source = make_function([c](const V& x) { return c * std::exp(x(0)) * std::sin(x(1)); });
+    p.exact_expression = "exp(x)*sin(y)";
+    p.source_expression = ct + "*exp(x)*sin(y)";
   } else if (name == "linear") {
     p.description = "u = 1 + 2x - 3y (patch test)";
     p.exact = make_function([](const V& x) { return 1 + 2 * x(0) - 3 * x(1); },
                             [](const V&) -> V { return {2.0, -3.0, 0.0}; });
     p.source = make_function([c](const V& x) { return c * (1 + 2 * x(0) - 3 * x(1)); });
+    p.exact_expression = "1 + 2*x - 3*y";
+    p.source_expression = ct + "*(1 + 2*x - 3*y)";
   } else if (name == "poly") {
     p.description = "u = x^2 y + y^3 - x y";
     p.exact = make_function([](const V& x) { return x(0) * x(0) * x(1) + x(1) * x(1) * x(1) - x(0) * x(1); },
@@ -46,6 +57,8 @@ ManufacturedProblem manufactured_problem(const std::string& name, double c) {
     p.source = make_function([c](const V& x) {
       return -8 * x(1) + c * (x(0) * x(0) * x(1) + x(1) * x(1) * x(1) - x(0) * x(1));
     });
+    p.exact_expression = "x^2*y + y^3 - x*y";
+    p.source_expression = "-8*y + " + ct + "*(x^2*y + y^3 - x*y)";
   } else if (name == "corner") {
     // u = r^α sin(αφ), α = 2/3, in polar coordinates (r, θ) about (1, 1) with φ = θ − π/2 ∈ [0, 3π/2]: harmonic,
     // zero on the two edges at the corner; ∇u = α r^(α−1) (sin(αφ − θ), cos(αφ − θ)).
@@ -57,6 +70,9 @@ ManufacturedProblem manufactured_problem(const std::string& name, double c) {
       if (phi < 0) phi += 2 * kPi;
     };
     constexpr double a = 2.0 / 3.0;
+    const std::string phi = "(atan2(y - 1, x - 1) < pi/2 ? atan2(y - 1, x - 1) + 3*pi/2 : atan2(y - 1, x - 1) - pi/2)";
+    p.exact_expression = "((x - 1)^2 + (y - 1)^2)^(1/3)*sin(2/3*" + phi + ")";
+    p.source_expression = ct + "*" + p.exact_expression;
     p.exact = make_function(
         [polar](const V& x) {
           double r, theta, phi;

@@ -13,6 +13,9 @@ struct ManufacturedProblem {
   std::string description;
   std::shared_ptr<Function> exact;   ///< u, with its closed-form gradient
   std::shared_ptr<Function> source;  ///< f = -Δu + c u
+  /// u and f as muparser expressions in x, y (the syntax of fem::Expression, --exact and --source), for reports:
+  /// they evaluate to exact and source (tests/fem/test_problems.cpp checks that), with c written out.
+  std::string exact_expression, source_expression;
 };
 
 /// Names: "sine" (sin(πx) sin(πy)), "harmonic" (e^x sin y), "linear" (1 + 2x - 3y, the patch test),

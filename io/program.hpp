@@ -2,9 +2,11 @@
 // What every iga-* program shares at its edges (CONVENTIONS.md, "Programs"): the command line is parsed so
 // that a usage error is one line "PROGRAM: error: ..." and exit code 2; the run is wrapped so that every
 // exception (a typed iga::Error, std::bad_alloc, anything else) is one line "PROGRAM: error: ..." and exit
-// code 1; validators check options at parse time in the option's own words. Header-only: programs link
-// CLI11 themselves.
+// code 1; validators check options at parse time in the option's own words; every program has --version,
+// --quiet, --config FILE and --export-config FILE (add_common_options) and records what ran in its report
+// (run_info). Header-only: programs link CLI11 themselves.
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -14,16 +16,109 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
+#include "io/report.hpp"
+#include "io/version.hpp"
 
 namespace iga::io {
 
-/// Parses argv. Returns an exit code when the program must stop now: 0 after --help, 2 (one line on stderr)
-/// on a usage error; std::nullopt when the run goes on.
-inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const std::string& program) {
+/// The options every iga-* program has (README, "Conventions of every program").
+struct CommonOptions {
+  explicit CommonOptions(std::string name) : program(std::move(name)) {}
+  std::string program;        ///< "iga-poisson", ...
+  bool quiet = false;         ///< --quiet: nothing on stderr but errors
+  std::string export_config;  ///< --export-config FILE ("-": standard output)
+};
+
+/// "iga-poisson 0.1.0 (git 0123456789ab)": what --version prints and the report records.
+inline std::string version_line(const std::string& program) {
+  return program + " " + version() + " (git " + git_revision() + ")";
+}
+
+/// Adds --version, --quiet, --config FILE (TOML or INI: `name = value`, option names without dashes; command-line
+/// options override the file) and --export-config FILE.
+inline void add_common_options(CLI::App& app, CommonOptions& common) {
+  app.set_version_flag("--version", version_line(common.program), "print the program's version and git revision");
+  app.set_config("--config", "", "read options from a TOML/INI file (name = value, names without dashes); options "
+                                 "given on the command line override it");
+  app.add_option("--export-config", common.export_config,
+                 "write this run's options as a --config file ('-': standard output) and go on; options left at their "
+                 "defaults are listed as comments")
+      ->configurable(false)
+      ->check(CLI::Validator(
+          [](std::string& t) { return t.find_first_not_of(" \t") == std::string::npos ? "empty value" : ""; }, "FILE"));
+  app.add_flag("--quiet", common.quiet, "nothing on stderr but errors (no progress, notes or summary)");
+}
+
+namespace detail {
+// An option's long name, or "" for options without one (positionals) and the ones that only steer the run
+// (help, version, config, export-config).
+inline std::string setting_name(const CLI::Option* opt) {
+  if (opt->get_lnames().empty()) return std::string();
+  const std::string& name = opt->get_lnames().front();
+  for (const char* skip : {"help", "help-all", "version", "config", "export-config"}) {
+    if (name == skip) return std::string();
+  }
+  return name;
+}
+}  // namespace detail
+
+/// The effective configuration as a --config file (TOML): the options that were set (on the command line or in
+/// a --config file) as CLI11 writes them, then the others with their defaults as comments.
+inline std::string export_config_text(const CLI::App& app, const std::string& program) {
+  std::string text = "# " + version_line(program) + ": options of one run (read back with --config FILE)\n";
+  text += app.config_to_str(false, false);
+  std::string defaults;
+  for (const CLI::Option* opt : app.get_options()) {
+    const std::string name = detail::setting_name(opt);
+    if (name.empty() || opt->count() > 0) continue;
+    const std::string d = opt->get_default_str();
+    defaults += "# " + name + " = " + (d.empty() ? "(not set)" : d) + "\n";
+  }
+  if (!defaults.empty()) text += "# left at their defaults:\n" + defaults;
+  return text;
+}
+
+/// What ran, for the report: program, version, git_revision, schema_version and `settings`, every option by its
+/// long name with its effective value (as given; the default when not given; null when neither; flags true/false).
+inline nlohmann::json run_info(const CLI::App& app, const std::string& program) {
+  nlohmann::json settings = nlohmann::json::object();
+  for (const CLI::Option* opt : app.get_options()) {
+    const std::string name = detail::setting_name(opt);
+    if (name.empty()) continue;
+    if (opt->get_expected_min() == 0) {
+      settings[name] = opt->count() > 0;
+    } else if (opt->count() > 0) {
+      const std::vector<std::string>& r = opt->results();
+      settings[name] = r.size() == 1 ? nlohmann::json(r.front()) : nlohmann::json(r);
+    } else {
+      const std::string d = opt->get_default_str();
+      settings[name] = d.empty() ? nlohmann::json(nullptr) : nlohmann::json(d);
+    }
+  }
+  return {{"program", program}, {"version", version()}, {"git_revision", git_revision()},
+          {"schema_version", kReportSchemaVersion}, {"settings", settings}};
+}
+
+/// Parses argv. Returns an exit code when the program must stop now: 0 after --help or --version, 2 (one line on
+/// stderr) on a usage error (CLI11's own codes mapped), 1 when --export-config cannot be written; std::nullopt
+/// when the run goes on.
+inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CommonOptions& common) {
+  const std::string& program = common.program;
   try {
     app.parse(argc, argv);
+    if (!common.export_config.empty() && common.export_config != "none") {
+      write_text(common.export_config, export_config_text(app, program));
+    }
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << std::endl;
+    return 0;
+  } catch (const iga::Error& e) {
+    std::cerr << program << ": error: --export-config: " << e.what() << std::endl;
+    return 1;
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
     return 0;
@@ -144,6 +239,12 @@ inline CLI::Validator thread_count() {
         return std::string();
       },
       "1.." + std::to_string(most));
+}
+
+/// An input file that exists, or "-" for standard input (the iga-* convention).
+inline CLI::Validator input_file() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string { return text == "-" ? std::string() : CLI::ExistingFile(text); }, "FILE");
 }
 
 /// Text that must say something: an empty or blank value is an error, not "use the default".

@@ -5,6 +5,9 @@
 
 namespace iga::io {
 
+/// Whether an output option names a file to write: "none" (and "") means "do not write", in every program.
+inline bool writes(const std::string& path) { return !path.empty() && path != "none"; }
+
 /// Writes text to a file, or to standard output when path is "-"; every write is checked (a full disk, /dev/full):
 /// InputError(path, 0, "cannot write file"), "stdout" for "-".
 void write_text(const std::string& path, const std::string& text);

@@ -9,6 +9,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "core/error.hpp"
+#include "io/report.hpp"
 
 namespace iga::io {
 
@@ -28,7 +29,12 @@ void write_vtk_grid(const std::string& path, vtkDataSet* grid) {
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->AddObserver(vtkCommand::ErrorEvent, on_error);
   writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, on_error);
-  writer->SetFileName(path.c_str());
+  const bool to_stdout = path == "-";
+  if (to_stdout) {
+    writer->WriteToOutputStringOn();
+  } else {
+    writer->SetFileName(path.c_str());
+  }
   writer->SetInputData(grid);
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToZLib();
@@ -36,6 +42,7 @@ void write_vtk_grid(const std::string& path, vtkDataSet* grid) {
   if (ok != 1 || vtk_error || writer->GetErrorCode() != vtkErrorCode::NoError) {
     throw InputError(path, 0, "cannot write file");
   }
+  if (to_stdout) write_text("-", writer->GetOutputString());
 }
 
 }  // namespace iga::io

@@ -7,7 +7,7 @@ class vtkDataSet;
 
 namespace iga::io {
 
-/// Writes an unstructured grid (binary, zlib) to path. InputError(path, 0, "cannot write file") when VTK fails;
+/// Writes an unstructured grid (binary, zlib) to path ("-": standard output). InputError(path, 0, "cannot write file") when VTK fails;
 /// VTK's own error output is suppressed.
 void write_vtk_grid(const std::string& path, vtkDataSet* grid);
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <string_view>
 #include <system_error>
 #include <utility>
@@ -202,6 +203,7 @@ void strip_byte_order_mark(std::string& line, const Where& where) {
 }  // namespace
 
 PolyMesh read_obj(const std::string& path) {
+  if (path == "-") return parse_obj(std::cin, "stdin");
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(path, 0, "cannot read (is a directory)");

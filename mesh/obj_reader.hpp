@@ -7,7 +7,7 @@
 
 namespace iga::mesh {
 
-/// Reads an OBJ file. Throws InputError(path, 0, "cannot open file") if it cannot be opened,
+/// Reads an OBJ file ("-": standard input, named "stdin" in messages). Throws InputError(path, 0, "cannot open file") if it cannot be opened,
 /// InputError(path, 0, "cannot read (is a directory)") for a directory, and everything parse_obj throws.
 PolyMesh read_obj(const std::string& path);
 

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -26,6 +27,17 @@
 namespace mf = iga::quadrature::moment_fit;
 
 namespace {
+
+bool quiet = false;  // --quiet
+
+// What the fit found, on stderr (the iga-* convention: stdout carries only a report asked for with '-').
+__attribute__((format(printf, 1, 2))) void say(const char* format, ...) {
+  if (quiet) return;
+  va_list args;
+  va_start(args, format);
+  std::vfprintf(stderr, format, args);
+  va_end(args);
+}
 
 struct Settings {
   int min_valence = 3, max_valence = 8;
@@ -54,7 +66,7 @@ mf::FitResult try_fit(int n, int q, int diagonal, const Settings& s) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   double best = r.attempts.front().residual;
   for (const auto& a : r.attempts) best = std::min(best, a.residual);
-  std::printf("n=%2d q=%2d%s successes %2d/%2d  best residual %.2e  %s  (%.1f s)\n", n, q,
+  say("n=%2d q=%2d%s successes %2d/%2d  best residual %.2e  %s  (%.1f s)\n", n, q,
               s.symmetric ? (" diag=" + std::to_string(r.diagonal_points)).c_str() : "", r.successes(),
               static_cast<int>(r.attempts.size()), best, r.converged ? "CONVERGED" : "-", seconds);
   std::fflush(stdout);
@@ -83,15 +95,15 @@ void print_rank(int n, const Settings& s) {
   const Eigen::VectorXd sv = svd.singularValues();
   int rank = 0;
   while (rank < sv.size() && sv(rank) > 1e-10 * sv(0)) ++rank;
-  std::printf("n=%2d space=%s functions %d rank %d (sigma[rank-1] = %.2e, sigma[rank] = %.2e relative) -> q >= %d;"
+  say("n=%2d space=%s functions %d rank %d (sigma[rank-1] = %.2e, sigma[rank] = %.2e relative) -> q >= %d;"
               " count of sigma_i/sigma_1 above", n, s.space.c_str(), m, rank, sv(rank - 1) / sv(0),
               rank < sv.size() ? sv(rank) / sv(0) : 0.0, (rank + 2) / 3);
   for (const double cut : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14}) {
     int k = 0;
     while (k < sv.size() && sv(k) > cut * sv(0)) ++k;
-    std::printf(" %.0e: %d", cut, k);
+    say(" %.0e: %d", cut, k);
   }
-  std::printf("\n");
+  say("\n");
   std::fflush(stdout);
 }
 
@@ -103,7 +115,7 @@ void run_elimination(int n, const Settings& s) {
   const iga::quadrature::Rule start = iga::quadrature::tiled_rule(s.eliminate[0], s.eliminate[1]);
   const mf::FitResult r = mf::eliminate_points(n, start, o, std::max(1, s.first_points));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("n=%2d space=%s elimination from tiles:%d:%d (%d points): %s q=%d residual %.2e min weight %.3e "
+  say("n=%2d space=%s elimination from tiles:%d:%d (%d points): %s q=%d residual %.2e min weight %.3e "
               "(||b|| = %.2e; %d removal steps tried, %.1f s)\n", n, s.space.c_str(), s.eliminate[0], s.eliminate[1],
               static_cast<int>(start.size()), r.converged ? "CONVERGED" : "start not exact", r.points, r.residual,
               r.rule.weights.minCoeff(), mf::moments(n, o.space).norm(), std::max(0, static_cast<int>(r.attempts.size()) - 1), seconds);
@@ -119,7 +131,7 @@ void run_elimination(int n, const Settings& s) {
              std::to_string(s.eliminate[1]) + "); seed 0 attempt 0: deterministic";
     const auto path = std::filesystem::path(s.output) / mf::table_file_name(n, r.space, false);
     mf::write_table(path.string(), t);
-    std::printf("  wrote %s\n", path.string().c_str());
+    say("  wrote %s\n", path.string().c_str());
   }
 }
 
@@ -147,18 +159,18 @@ void run_valence(int n, const Settings& s) {
           t.rule = r.rule;
           const auto path = std::filesystem::path(s.output) / mf::table_file_name(n, r.space, r.symmetric);
           mf::write_table(path.string(), t);
-          std::printf("  wrote %s (residual %.2e, min weight %.3e)\n", path.string().c_str(), r.residual,
+          say("  wrote %s (residual %.2e, min weight %.3e)\n", path.string().c_str(), r.residual,
                       r.rule.weights.minCoeff());
         }
         return;
       }
       if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > s.time_limit) {
-        std::printf("n=%2d: time limit reached, no rule\n", n);
+        say("n=%2d: time limit reached, no rule\n", n);
         return;
       }
     }
   }
-  std::printf("n=%2d: no rule up to q = %d\n", n, last);
+  say("n=%2d: no rule up to q = %d\n", n, last);
 }
 
 // What CLI11 cannot check option by option: the relations between options.
@@ -203,7 +215,10 @@ int main(int argc, char** argv) {
   app.add_option("--polish-iterations", s.fit.polish_iterations, "Levenberg-Marquardt iterations per start")->check(iga::io::whole_number(0, 100000))->capture_default_str();
   app.add_option("--tolerance", s.fit.tolerance, "convergence: ||Phi w - b|| <= tolerance")->check(iga::io::finite_number(1e-300, 1.0))->capture_default_str();
   app.add_option("--lower-bound", s.fit.lower_bound, "u, v >= lower bound")->check(iga::io::finite_number(1e-16, 0.5))->capture_default_str();
-  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-fit-quadrature")) return *code;
+  iga::io::CommonOptions common{"iga-fit-quadrature"};
+  iga::io::add_common_options(app, common);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  quiet = common.quiet;
   if (s.output == "none") s.output.clear();
   return iga::io::run_program("iga-fit-quadrature", [&] {
     check_settings(s);

@@ -41,9 +41,10 @@ namespace {
 
 struct Options {
   std::string basis = "polyhedral", mesh, vtu, bv, json, three_valent, obj;
-  int presubdivide = 0, degree = 3, samples = 5;
+  int presubdivide = 0, degree = 3, samples = 4;
   bool degree_raise = false, quiet = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
+  nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
 };
 
 // A triangle of basis/registry.hpp (b_ijk with i, then j, descending: (d00), (d−1,1,0), (d−1,0,1), …, (00d))
@@ -72,9 +73,8 @@ int make_three_valent(const Options& o) {
   } catch (const iga::InputError& e) {
     throw iga::InputError(o.mesh, 0, e.what());
   }
-  iga::mesh::write_obj(net, o.obj);
-  nlohmann::json j;
-  j["program"] = "iga-geometry";
+  if (iga::io::writes(o.obj)) iga::mesh::write_obj(net, o.obj);
+  nlohmann::json j = o.run_info;
   j["three_valent"] = o.three_valent;
   j["mesh"] = o.mesh;
   j["obj"] = o.obj;
@@ -87,7 +87,7 @@ int make_three_valent(const Options& o) {
     std::cerr << "iga-geometry: wrote " << o.obj << " (" << net.num_vertices() << " vertices, " << net.num_faces()
               << " faces)" << std::endl;
   }
-  if (!o.json.empty()) iga::io::write_json(o.json, j);
+  if (iga::io::writes(o.json)) iga::io::write_json(o.json, j);
   return 0;
 }
 
@@ -109,7 +109,7 @@ int run(const Options& o) {
     const double elements = static_cast<double>(net.num_faces()) * std::pow(4.0, bo.presubdivide == iga::basis::BackendOptions::kUnset ? 0 : bo.presubdivide);
     std::ostringstream what;
     what << "this geometry (about " << std::setprecision(3) << elements << " elements)";
-    iga::fem::check_memory(1000.0 * elements + (o.vtu.empty() ? 0.0 : iga::fem::vtu_memory(elements, o.samples)), 0.0,
+    iga::fem::check_memory(1000.0 * elements + (!iga::io::writes(o.vtu) ? 0.0 : iga::fem::vtu_memory(elements, o.samples)), 0.0,
                            what.str(), "each --presubdivide step needs four times more; --vtu-samples costs its square per element");
   }
   iga::basis::BackendFacts facts;
@@ -123,8 +123,7 @@ int run(const Options& o) {
       patches.push_back({p.group, false, p.degree_u, p.degree_v, std::move(p.points)});
     }
   }
-  nlohmann::json j;
-  j["program"] = "iga-geometry";
+  nlohmann::json j = o.run_info;
   j["basis"] = o.basis;
   j["mesh"] = o.mesh;
   j["presubdivide"] = bo.presubdivide == iga::basis::BackendOptions::kUnset ? 0 : bo.presubdivide;
@@ -138,7 +137,7 @@ int run(const Options& o) {
   if (j["bv_skipped"].get<long long>() > 0) {
     log(std::to_string(j["bv_skipped"].get<long long>()) + " element(s) at extraordinary vertices or faces are not polynomial: not in the .bv (the .vtu samples them)");
   }
-  if (!o.vtu.empty()) {
+  if (iga::io::writes(o.vtu)) {
     if (geometry.space().num_elements() == 0) throw iga::InputError("the net produces no patch (every vertex and face touches the boundary): nothing to write to " + o.vtu);
     iga::io::VtuOptions vo;
     vo.samples = o.samples;
@@ -146,12 +145,12 @@ int run(const Options& o) {
     j["vtu"] = o.vtu;
     log("wrote " + o.vtu);
   }
-  if (!o.bv.empty()) {
+  if (iga::io::writes(o.bv)) {
     iga::io::write_bv(o.bv, patches);
     j["bv"] = o.bv;
     log("wrote " + o.bv + " (" + std::to_string(patches.size()) + " patches)");
   }
-  if (!o.json.empty()) {
+  if (iga::io::writes(o.json)) {
     iga::io::write_json(o.json, j);
     log("wrote " + o.json);
   }
@@ -166,7 +165,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> backend_list;
   for (const auto& b : iga::basis::backends()) backend_list.push_back(b.name);
   app.add_option("--basis", o.basis, "basis backend (" + iga::basis::backend_names() + ")")->check(CLI::IsMember(backend_list))->capture_default_str();
-  app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline)")->required()->check(CLI::ExistingFile);
+  app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline)")->required()->check(iga::io::input_file());
   app.add_option("--presubdivide", o.presubdivide, "Catmull-Clark steps applied to the net first (one makes any net with valences <= 8 admissible for polyhedral)")
       ->check(iga::io::whole_number(0, 6))->capture_default_str();
   app.add_option("--degree", o.degree, "bspline: degree per direction")->check(iga::io::whole_number(1, 12))->capture_default_str();
@@ -178,8 +177,11 @@ int main(int argc, char** argv) {
   app.add_option("--three-valent", o.three_valent, "make a three-valent net from the triangle mesh --mesh: dual (a vertex per triangle) or trisect (edges split in three, corners cut); written to --obj")
       ->check(CLI::IsMember({"dual", "trisect"}));
   app.add_option("--obj", o.obj, "with --three-valent: the OBJ file of the net")->check(iga::io::non_blank());
-  app.add_flag("--quiet", o.quiet, "no progress on stderr");
-  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-geometry")) return *code;
+  iga::io::CommonOptions common{"iga-geometry"};
+  iga::io::add_common_options(app, common);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  o.quiet = common.quiet;
+  o.run_info = iga::io::run_info(app, common.program);
   for (const char* option : {"degree", "presubdivide", "degree-raise"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }

@@ -48,8 +48,10 @@ int main(int argc, char** argv) {
   ins->excludes(itv);
   app.add_option("--algorithm", algorithm, "boehm | oslo | refine-smooth")
       ->check(CLI::IsMember({"boehm", "oslo", "refine-smooth"}));
-  app.add_option("--out", out, "output file (default stdout)")->check(iga::io::non_blank());
-  if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-knots")) return *code;
+  app.add_option("--out", out, "output file (default or '-': stdout; 'none': no output)")->check(iga::io::non_blank());
+  iga::io::CommonOptions common{"iga-knots"};
+  iga::io::add_common_options(app, common);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
   return iga::io::run_program("iga-knots", [&] {
     const SplineCurve curve = iga::io::read_curve_json(input);  // one line naming the file and position
     std::vector<double> xs = insert;
@@ -72,7 +74,7 @@ int main(int argc, char** argv) {
       throw iga::NumericalError("the refined control points are not finite (the knots' scale overflows); rescale the knots");
     }
     const std::string result = to_json(fine).dump(1) + "\n";
-    iga::io::write_text(out.empty() ? "-" : out, result);  // every write checked (a full disk, /dev/full)
+    if (out != "none") iga::io::write_text(out.empty() ? "-" : out, result);  // every write checked (a full disk, /dev/full)
     return 0;
   });
 }

@@ -116,7 +116,9 @@ TEST_F(Determinism, PoissonOneAndTwoThreadsAreBitIdentical) {
       EXPECT_EQ(ra[key].get<double>(), rb[key].get<double>()) << key;
     }
     ra.erase("threads");
+    ra["settings"].erase("threads");
     rb.erase("threads");
+    rb["settings"].erase("threads");
     expect_same_report(ra, rb);
     EXPECT_TRUE(read(a / "r.vtu") == read(b / "r.vtu")) << "the .vtu files of 1 and 2 threads differ";
   }
@@ -143,7 +145,9 @@ TEST_F(Determinism, BemOneAndTwoThreadsAreBitIdentical) {
   EXPECT_EQ(ra["threads"], 1);
   EXPECT_EQ(rb["threads"], 2);
   ra.erase("threads");
+  ra["settings"].erase("threads");
   rb.erase("threads");
+  rb["settings"].erase("threads");
   expect_same_report(ra, rb);
   for (const char* vtu : {"r.vtu", "rb.vtu"}) EXPECT_TRUE(read(a / vtu) == read(b / vtu)) << vtu << " differs";
 }
