@@ -20,7 +20,8 @@ double relative_l2_error(const iga::mesh::PolyMesh& net, const std::string& prob
   fem::PoissonProblem p;
   p.source = m.source;
   p.dirichlet = p.exact = m.exact;
-  const fem::PoissonResult r = fem::solve_poisson(basis::polyhedral::make_polyhedral_geometry(net), quadrature::Gauss(4), p);
+  const basis::Geometry g = basis::polyhedral::make_polyhedral_geometry(net);
+  const fem::PoissonResult r = fem::solve_poisson(g, quadrature::Gauss(4), p);
   return r.errors->l2 / r.errors->l2_exact;
 }
 }  // namespace
