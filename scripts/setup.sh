@@ -13,6 +13,15 @@ packages=(
   libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev
   python3-matplotlib
 )
+# ParaView, to look at the output: Debian's python3-paraview (pvpython) declares Conflicts: python3-vtk9, which
+# libvtk9-dev depends on, so apt would remove it to install ours. The paraview GUI package only recommends
+# python3-paraview and co-installs (checked with apt-cache show on Debian 12, ParaView 5.11.0). Stop before apt.
+if [[ "$(dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null || true)" == "install ok installed" ]]; then
+  echo "setup: python3-paraview conflicts with python3-vtk9 (needed by libvtk9-dev): remove it" \
+       "(apt-get remove python3-paraview); the paraview GUI co-installs" \
+       "(apt-get install --no-install-recommends paraview)" >&2
+  exit 1
+fi
 # shellcheck source=scripts/packages.sh
 source "$root/scripts/packages.sh"
 install_packages setup "${packages[@]}"

@@ -2,4 +2,5 @@
 set(IGA_QUADRATURE_MOMENT_FIT_SOURCES
   moment_fit/fit.cpp
   moment_fit/table.cpp
+  moment_fit/table_directory.cpp
 )

@@ -1,0 +1,18 @@
+# examples/: every example runs (its default is the quick variant) and checks its own result; exit 0 = passed.
+# Meshes come from the source tree's data/meshes; outputs go to the test's own folder.
+set(IGA_EXAMPLE_DATA ${PROJECT_SOURCE_DIR}/data/meshes)
+set(IGA_EXAMPLE_DIR ${CMAKE_CURRENT_BINARY_DIR}/examples)
+file(MAKE_DIRECTORY ${IGA_EXAMPLE_DIR})
+add_test(NAME example_poisson_annulus COMMAND poisson_annulus WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+add_test(NAME example_laplace_beltrami_cube COMMAND laplace_beltrami_cube --mesh ${IGA_EXAMPLE_DATA}/cube.obj
+         WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+add_test(NAME example_polyhedral_square COMMAND polyhedral_square --mesh ${IGA_EXAMPLE_DATA}/square_evs.obj
+         WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+add_test(NAME example_refinement_series COMMAND refinement_series --out ${IGA_EXAMPLE_DIR}/series
+         WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+set_tests_properties(example_poisson_annulus example_laplace_beltrami_cube example_polyhedral_square
+                     example_refinement_series PROPERTIES LABELS examples TIMEOUT 300)
+# refinement_series checks that its files exist: start it from an empty folder, so old files cannot pass for new.
+add_test(NAME example_refinement_series_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${IGA_EXAMPLE_DIR}/series)
+set_tests_properties(example_refinement_series_clean PROPERTIES FIXTURES_SETUP example_series LABELS examples)
+set_tests_properties(example_refinement_series PROPERTIES FIXTURES_REQUIRED example_series)
