@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "basis/registry.hpp"
+#include "benchmarks/study.hpp"
 #include "core/error.hpp"
 #include "fem/expression.hpp"
 #include "fem/memory.hpp"
@@ -40,6 +41,8 @@ struct Options {
   double reaction = 0.0;
   double max_memory = 0.0;  ///< GiB; 0: what the system has available
   bool quiet = false, mean_zero = false;
+  std::string study, degrees, study_output = "study", plots = "png,svg";  ///< --study K0:K1 and its options
+  bool vtu_given = false, json_given = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
@@ -352,6 +355,44 @@ int run(const Options& o) {
   return 0;
 }
 
+// --study K0:K1: every level is solve_run with --refine K (and --degree P of --degrees), so a level's report is
+// the one a single run writes.
+int study(const Options& o) {
+  iga::bench::StudyOptions so;
+  so.levels = iga::bench::parse_levels(o.study);
+  if (!o.degrees.empty()) so.degrees = iga::bench::parse_degrees(o.degrees);
+  const std::vector<std::string>& takes = iga::basis::backend(o.basis).options;
+  if (!o.degrees.empty() && std::find(takes.begin(), takes.end(), "degree") == takes.end()) {
+    throw iga::InputError("--degrees: --basis " + o.basis + " has a fixed degree");
+  }
+  if (!o.source.empty() && o.exact.empty()) {
+    throw iga::InputError("--study needs an exact solution for its error norms: give --exact with --source (or --problem)");
+  }
+  so.output = o.study_output;
+  so.plots = o.plots;
+  so.vtu = o.vtu_given ? o.vtu : std::string();
+  so.json = o.json_given ? o.json : std::string();
+  so.quiet = o.quiet;
+  auto level = [&o](int degree, int refine, const std::string& vtu) {
+    Options lo = o;
+    lo.refine = refine;
+    if (degree > 0) {
+      lo.degree = degree;
+      if (!lo.count("degree")) lo.given.emplace_back("degree");
+    }
+    lo.vtu = vtu.empty() ? "none" : vtu;
+    lo.json = "none";
+    return lo;
+  };
+  iga::bench::StudyHooks hooks;
+  hooks.check_size = [&](int degree, int refine) {
+    const Options lo = level(degree, refine, o.vtu_given && o.vtu != "none" ? o.vtu : std::string());
+    check_predicted_size(lo, make_setup(lo));
+  };
+  hooks.solve = [&](int degree, int refine, const std::string& vtu) { return solve_run(level(degree, refine, vtu)); };
+  return iga::bench::run_study(so, hooks);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -395,9 +436,21 @@ int main(int argc, char** argv) {
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
+  auto* study_option = app.add_option("--study", o.study, "convergence study over refinement levels K0:K1 (at least 3), each solved in this process: a table with rates on stderr, PREFIX.csv, PREFIX.json, plots; with --vtu a .vtu per level and a .pvd")
+      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_levels(t); }, "K0:K1"))
+      ->excludes(app.get_option("--refine"))->excludes(app.get_option("--adaptive"));
+  app.add_option("--degrees", o.degrees, "--study, bspline: one series per degree, e.g. 2,3,4")
+      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_degrees(t); }, "P,P,..."))
+      ->needs(study_option)->excludes(app.get_option("--degree"));
+  app.add_option("--study-output", o.study_output, "--study: PREFIX of PREFIX.csv, PREFIX.json and the plots PREFIX_dofs.png/.svg, PREFIX_seconds.png/.svg ('none': no files)")
+      ->check(iga::io::non_blank())->needs(study_option)->capture_default_str();
+  app.add_option("--plots", o.plots, "--study: plot formats png,svg, png or svg (matplotlib, through /usr/bin/python3), or none")
+      ->check(CLI::IsMember({"png,svg", "png", "svg", "none"}))->needs(study_option)->capture_default_str();
   if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-poisson")) return *code;
   for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
-  return iga::io::run_program("iga-poisson", [&] { return run(o); });
+  o.vtu_given = app.count("--vtu") > 0;
+  o.json_given = app.count("--json") > 0;
+  return iga::io::run_program("iga-poisson", [&] { return o.study.empty() ? run(o) : study(o); });
 }
