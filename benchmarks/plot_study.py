@@ -23,6 +23,7 @@ def main():
     try:
         import matplotlib
         matplotlib.use("Agg")
+        matplotlib.rcParams["svg.fonttype"] = "none"  # text as text: smaller, editable SVG
         import matplotlib.pyplot as plt
     except Exception as e:  # ImportError, or a broken installation
         print("cannot import matplotlib (%s: %s)" % (type(e).__name__, str(e).splitlines()[0] if str(e) else ""),
