@@ -445,7 +445,12 @@ int main(int argc, char** argv) {
   app.add_option("--study-output", o.study_output, "--study: PREFIX of PREFIX.csv, PREFIX.json and the plots PREFIX_dofs.png/.svg, PREFIX_seconds.png/.svg ('none': no files)")
       ->check(iga::io::non_blank())->needs(study_option)->capture_default_str();
   app.add_option("--plots", o.plots, "--study: plot formats png,svg, png or svg (matplotlib, through /usr/bin/python3), or none")
-      ->check(CLI::IsMember({"png,svg", "png", "svg", "none"}))->needs(study_option)->capture_default_str();
+      ->check(CLI::Validator(
+          [](std::string& t) {
+            return t == "png,svg" || t == "png" || t == "svg" || t == "none" ? std::string() : "'" + t + "' is not png,svg, png, svg or none";
+          },
+          "png,svg|png|svg|none"))
+      ->needs(study_option)->capture_default_str();
   if (const auto code = iga::io::parse_command_line(app, argc, argv, "iga-poisson")) return *code;
   for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);

@@ -218,6 +218,8 @@ TEST_F(Study, BadOptionsAreOneLine) {
       {"--degrees 2,3", 2, "requires --study"},
       {"--study 0:2 --degrees 2,2", 2, "listed twice"},
       {"--study 0:2 --degrees 2 --degree 3", 2, "excludes"},
+      {"--study 0:2 --plots jpg", 2, "'jpg' is not png,svg, png, svg or none"},
+      {"--plots png", 2, "requires --study"},
       {"--study 0:2 --source 1", 1, "needs an exact solution"},
       {"--study 0:2 --basis cc --degrees 2,3", 1, "fixed degree"},
   };
