@@ -124,6 +124,7 @@ TEST_F(Study, RatesMatchOwnFitAndLevelsMatchSingleRuns) {
       EXPECT_NEAR(level[key].get<double>(), single[key].get<double>(), 1e-12 * std::abs(single[key].get<double>()))
           << key << " level " << k;
     }
+    for (auto it = single.begin(); it != single.end(); ++it) EXPECT_TRUE(level.contains(it.key())) << it.key();
     for (const char* key : {"dofs", "elements", "quadrature_points", "degree", "refine", "basis", "mesh", "problem"}) {
       EXPECT_EQ(level[key], single[key]) << key;
     }
