@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <sstream>
 
 #include "basis/registry.hpp"
+#include "benchmarks/study.hpp"
 #include "core/error.hpp"
 #include "fem/expression.hpp"
 #include "fem/memory.hpp"
@@ -39,10 +41,19 @@ struct Options {
   double reaction = 0.0;
   double max_memory = 0.0;  ///< GiB; 0: what the system has available
   bool quiet = false, mean_zero = false;
+  std::string study, degrees, study_output = "study", plots = "png,svg";  ///< --study K0:K1 and its options
+  bool vtu_given = false, json_given = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
+
+using Log = std::function<void(const std::string&)>;
+Log make_log(const Options& o) {
+  return [quiet = o.quiet](const std::string& s) {
+    if (!quiet) std::cerr << "iga-poisson: " << s << std::endl;
+  };
+}
 
 std::vector<iga::Index> parse_intervals(const std::string& list) {
   std::vector<iga::Index> intervals;
@@ -61,67 +72,75 @@ std::vector<iga::Index> parse_intervals(const std::string& list) {
   return intervals;
 }
 
-int run(const Options& o) {
+// The backend, its options and the coarse net: what every run (and every level of a study) starts from.
+struct Setup {
+  const iga::basis::Backend* backend = nullptr;
+  iga::basis::BackendOptions bo;
+  int degree = 0;
+  std::optional<iga::mesh::PolyMesh> net;
+  bool write_vtu = false;
+};
+
+Setup make_setup(const Options& o) {
   using namespace iga;
-  const auto t_start = std::chrono::steady_clock::now();
-  auto log = [&](const std::string& s) {
-    if (!o.quiet) std::cerr << "iga-poisson: " << s << std::endl;
-  };
-  if (o.threads > 0) fem::set_num_threads(o.threads);
+  Setup s;
   // The backend from the registry: its options, defaults and construction (no backend policy here).
-  const basis::Backend& backend = basis::backend(o.basis);
-  basis::check_options(backend, o.given);
-  basis::BackendOptions bo;
-  if (o.count("degree")) bo.degree = o.degree;
-  if (o.count("presubdivide")) bo.presubdivide = o.presubdivide;
-  if (o.count("geometry")) bo.geometry = o.geometry;
-  bo.net_name = o.mesh;
-  const int degree = basis::degree(backend, bo);
-  const int refine_steps = o.refine >= 0 ? o.refine : backend.default_refine;
-  basis::BackendFacts facts;
-  std::optional<mesh::PolyMesh> net;
-  if (!o.mesh.empty()) net = mesh::read_obj(o.mesh);
-  // Size before work: the elements the refinement will make (each step splits every element in four), and the
-  // memory of the solve and the output, against what is available.
-  const bool write_vtu = !o.vtu.empty() && o.vtu != "none";
-  const double max_bytes = o.max_memory * 1024.0 * 1024.0 * 1024.0;
-  auto check_size = [&](double elements, const std::string& what) {
-    fem::check_memory(fem::poisson_memory(elements, (degree + 1) * (degree + 1)) +
-                          (write_vtu ? fem::vtu_memory(elements, o.samples) : 0.0),
-                      max_bytes, what,
-                      "each --refine or --presubdivide step needs four times more" +
-                          (write_vtu ? "; --vtu-samples " + std::to_string(o.samples) + " writes " +
-                                           std::to_string(o.samples * o.samples) + " points per element"
-                                     : std::string()));
-  };
-  {
-    const int pre = o.count("presubdivide") ? o.presubdivide : 0;
-    const double coarse = net ? static_cast<double>(net->num_faces()) : 1.0;
-    const double predicted = coarse * std::pow(4.0, refine_steps + pre);
-    std::ostringstream what;
-    what << "this run (about " << std::setprecision(3) << predicted << " elements after " << refine_steps + pre << " refinement steps)";
-    check_size(predicted, what.str());
-  }
+  s.backend = &basis::backend(o.basis);
+  basis::check_options(*s.backend, o.given);
+  if (o.count("degree")) s.bo.degree = o.degree;
+  if (o.count("presubdivide")) s.bo.presubdivide = o.presubdivide;
+  if (o.count("geometry")) s.bo.geometry = o.geometry;
+  s.bo.net_name = o.mesh;
+  s.degree = basis::degree(*s.backend, s.bo);
+  if (!o.mesh.empty()) s.net = mesh::read_obj(o.mesh);
+  s.write_vtu = !o.vtu.empty() && o.vtu != "none";
+  return s;
+}
+
+int refine_steps(const Options& o, const Setup& s) { return o.refine >= 0 ? o.refine : s.backend->default_refine; }
+
+// Size before work: the memory of the solve and the output for this many elements, against what is available.
+void check_size(const Options& o, const Setup& s, double elements, const std::string& what) {
+  iga::fem::check_memory(iga::fem::poisson_memory(elements, (s.degree + 1) * (s.degree + 1)) +
+                             (s.write_vtu ? iga::fem::vtu_memory(elements, o.samples) : 0.0),
+                         o.max_memory * 1024.0 * 1024.0 * 1024.0, what,
+                         "each --refine or --presubdivide step needs four times more" +
+                             (s.write_vtu ? "; --vtu-samples " + std::to_string(o.samples) + " writes " +
+                                                std::to_string(o.samples * o.samples) + " points per element"
+                                          : std::string()));
+}
+
+// The elements the refinement will make (each step splits every element in four), checked before it is made.
+void check_predicted_size(const Options& o, const Setup& s) {
+  const int steps = refine_steps(o, s) + (o.count("presubdivide") ? o.presubdivide : 0);
+  const double predicted = (s.net ? static_cast<double>(s.net->num_faces()) : 1.0) * std::pow(4.0, steps);
+  std::ostringstream what;
+  what << "this run (about " << std::setprecision(3) << predicted << " elements after " << steps << " refinement steps)";
+  check_size(o, s, predicted, what.str());
+}
+
+iga::refine::Refinement make_geometry(const Options& o, const Setup& s, iga::basis::BackendFacts& facts) {
+  using namespace iga;
   // --refine-intervals: each step halves only the listed knot intervals, in both directions (refine-and-smooth).
   const std::vector<Index> intervals = parse_intervals(o.refine_intervals);
+  const int steps = refine_steps(o, s);
   refine::Refinement refined =
-      basis::make_refined_geometry(backend, net ? &*net : nullptr, bo, intervals.empty() ? refine_steps : 0, facts);
-  for (int s = 0; !intervals.empty() && s < refine_steps; ++s) {
+      basis::make_refined_geometry(*s.backend, s.net ? &*s.net : nullptr, s.bo, intervals.empty() ? steps : 0, facts);
+  for (int k = 0; !intervals.empty() && k < steps; ++k) {
     refined = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
   }
-  for (const std::string& note : facts.notes) log(note);
-  const basis::Geometry& geometry = refined.geometry;
-  check_size(static_cast<double>(std::max(geometry.space().num_elements(), geometry.space().num_dofs())),
-             "this run (" + std::to_string(geometry.space().num_elements()) + " elements, " +
-                 std::to_string(geometry.space().num_dofs()) + " dofs)");
-  const bool surface = geometry.dim() == 3;
-  if (geometry.orientation() < 0) log("note: the planar net is oriented clockwise (det J < 0); solved as it is (the same solution)");
-  const auto names = geometry.space().boundary_part_names();
+  const basis::Space& space = refined.geometry.space();
+  check_size(o, s, static_cast<double>(std::max(space.num_elements(), space.num_dofs())),
+             "this run (" + std::to_string(space.num_elements()) + " elements, " + std::to_string(space.num_dofs()) + " dofs)");
+  return refined;
+}
 
-  // The problem: a built-in manufactured one, expressions, or both (expressions override).
+// The problem: a built-in manufactured one, or expressions. problem_name: the built-in one's name, or "".
+iga::fem::PoissonProblem make_problem(const Options& o, const iga::basis::Geometry& geometry, std::string& problem_name) {
+  using namespace iga;
   fem::PoissonProblem problem;
   problem.reaction = o.reaction;
-  std::string problem_name = o.problem;
+  problem_name = o.problem;
   // A built-in problem's source, exact solution and Dirichlet data belong together: replacing one of them would
   // report errors against a function that no longer solves the problem.
   if (!o.problem.empty() && (!o.source.empty() || !o.exact.empty() || !o.dirichlet.empty())) {
@@ -134,16 +153,12 @@ int run(const Options& o) {
     }
     problem_name = "sine";
   }
-  std::shared_ptr<const fem::Function> builtin_exact;
-  std::pair<std::string, std::string> builtin_text;  ///< the built-in problem's exact solution and source as text
   if (!problem_name.empty()) {
-    if (surface) throw UnsupportedError("--problem " + problem_name + ": built-in problems are for planar domains; give --source and --exact for surfaces");
+    if (geometry.dim() == 3) throw UnsupportedError("--problem " + problem_name + ": built-in problems are for planar domains; give --source and --exact for surfaces");
     const fem::ManufacturedProblem mp = fem::manufactured_problem(problem_name, o.reaction);
     problem.source = mp.source;
     problem.exact = mp.exact;
     problem.dirichlet = mp.exact;
-    builtin_exact = mp.exact;
-    builtin_text = {mp.exact_expression, mp.source_expression};
   }
   if (!o.source.empty()) problem.source = std::make_shared<fem::Expression>(o.source, "--source");
   if (!o.exact.empty()) {
@@ -153,95 +168,98 @@ int run(const Options& o) {
     if (o.dirichlet.empty()) problem.dirichlet = problem.exact;
   }
   if (!o.dirichlet.empty()) problem.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
-  fem::select_neumann(problem, o.neumann, o.neumann_boundary, o.neumann_where, names);
+  fem::select_neumann(problem, o.neumann, o.neumann_boundary, o.neumann_where, geometry.space().boundary_part_names());
   problem.mean_zero = o.mean_zero;
+  return problem;
+}
+
+std::unique_ptr<iga::quadrature::RuleProvider> make_rules(const Options& o, const Setup& s) {
+  using namespace iga;
   std::unique_ptr<quadrature::RuleProvider> rules;
   try {
-    rules = quadrature::make_rule_provider(o.quadrature.empty() ? backend.default_quadrature(degree) : o.quadrature, degree + 1);
+    rules = quadrature::make_rule_provider(o.quadrature.empty() ? s.backend->default_quadrature(s.degree) : o.quadrature, s.degree + 1);
   } catch (const InputError& e) {
     throw InputError("--quadrature: " + std::string(e.what()));
   }
-  if (rules->name().rfind("gauss:", 0) == 0 && std::stoi(rules->name().substr(6)) < degree + 1) {
+  if (rules->name().rfind("gauss:", 0) == 0 && std::stoi(rules->name().substr(6)) < s.degree + 1) {
     // Fewer Gauss points than degree + 1 per direction integrate neither the stiffness nor the boundary mass of
     // degree-p functions exactly even on affine elements, and leave the latter singular: not an answer to report.
     throw InputError("--quadrature " + o.quadrature + ": " + rules->name().substr(6) + " points per direction are fewer than degree + 1 = " +
-                     std::to_string(degree + 1) + " (the least that integrates the matrices of degree-" +
-                     std::to_string(degree) + " functions exactly on affine elements)");
+                     std::to_string(s.degree + 1) + " (the least that integrates the matrices of degree-" +
+                     std::to_string(s.degree) + " functions exactly on affine elements)");
   }
-  const fem::SolverOptions solver{fem::parse_solver(o.solver)};
+  return rules;
+}
 
-  log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
-      std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
-  // --adaptive: solve → estimate → mark → refine, one .vtu per step and a .pvd series; the report's top-level
-  // figures are the last step's.
-  fem::PoissonResult r;
-  std::optional<basis::Geometry> final_geometry;
-  nlohmann::json adaptive_json;
-  if (o.adaptive >= 0) {
-    refine::AdaptiveOptions ao;
-    ao.steps = o.adaptive;
-    ao.theta = o.theta;
-    ao.marking = refine::parse_marking(o.mark);
-    ao.max_dofs = o.max_dofs;
-    ao.admissibility = o.admissibility;
-    const std::string base = o.vtu.size() > 4 && o.vtu.substr(o.vtu.size() - 4) == ".vtu" ? o.vtu.substr(0, o.vtu.size() - 4) : o.vtu;
-    std::vector<io::SeriesEntry> series;
-    auto on_step = [&](const refine::AdaptiveStep& s, const basis::Geometry& g, const fem::PoissonResult& res, const fem::Estimate& est) {
-      log("step " + std::to_string(s.step) + ": " + std::to_string(s.dofs) + " dofs, " + std::to_string(s.levels) +
-          " levels, estimate " + std::to_string(s.estimate) +
-          (s.energy_error ? ", energy error " + std::to_string(*s.energy_error) : std::string()));
-      r = res;
-      final_geometry = g;
-      if (write_vtu) {
-        char name[32];
-        std::snprintf(name, sizeof name, "_step%03d.vtu", s.step);
-        const std::string file = base + name;
-        io::VtuOptions vo;
-        vo.samples = o.samples;
-        vo.exact = problem.exact;
-        io::write_vtu(file, g, res.u, vo, {{"indicator", est.indicators}});
-        const std::size_t slash = file.find_last_of('/');
-        series.push_back({static_cast<double>(s.step), slash == std::string::npos ? file : file.substr(slash + 1)});
-        io::write_pvd(base + ".pvd", series);
-      }
-    };
-    const refine::AdaptiveRun run = refine::adaptive_solve(geometry, *rules, problem, solver, ao, on_step);
-    const std::vector<refine::AdaptiveStep>& history = run.history;
-    if (run.stopped != "steps") log("adaptive loop stopped after step " + std::to_string(history.back().step) + ": " + run.stopped);
-    adaptive_json = {{"steps", o.adaptive}, {"theta", o.theta}, {"marking", refine::to_string(ao.marking)},
-                     {"max_dofs", o.max_dofs}, {"admissibility", o.admissibility}, {"stopped", run.stopped}};
-    if (write_vtu) adaptive_json["pvd"] = base + ".pvd";
-    for (const refine::AdaptiveStep& s : history) {
-      auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
-      adaptive_json["history"].push_back(
-          {{"step", s.step}, {"dofs", s.dofs}, {"elements", s.elements}, {"levels", s.levels},
-           {"quadrature_points", s.quadrature_points}, {"estimate", s.estimate}, {"energy_error", opt(s.energy_error)},
-           {"l2_error", opt(s.l2_error)}, {"efficiency_index", opt(s.efficiency)}, {"marked", s.marked},
-           {"added_for_admissibility", s.added},
-           {"seconds", {{"setup", s.setup_seconds}, {"assembly", s.assembly_seconds}, {"solve", s.solve_seconds},
-                        {"errors", s.error_seconds}, {"estimate", s.estimate_seconds}, {"mark", s.mark_seconds},
-                        {"refine", s.refine_seconds}}}});
+// --adaptive: solve → estimate → mark → refine, one .vtu per step and a .pvd series; r is the last step's result.
+// Returns the report's "adaptive" object.
+nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis::Geometry& geometry,
+                              const iga::quadrature::RuleProvider& rules, const iga::fem::PoissonProblem& problem,
+                              const iga::fem::SolverOptions& solver, iga::fem::PoissonResult& r, const Log& log) {
+  using namespace iga;
+  refine::AdaptiveOptions ao;
+  ao.steps = o.adaptive;
+  ao.theta = o.theta;
+  ao.marking = refine::parse_marking(o.mark);
+  ao.max_dofs = o.max_dofs;
+  ao.admissibility = o.admissibility;
+  const std::string base = o.vtu.size() > 4 && o.vtu.substr(o.vtu.size() - 4) == ".vtu" ? o.vtu.substr(0, o.vtu.size() - 4) : o.vtu;
+  std::vector<io::SeriesEntry> series;
+  auto on_step = [&](const refine::AdaptiveStep& st, const basis::Geometry& g, const fem::PoissonResult& res, const fem::Estimate& est) {
+    log("step " + std::to_string(st.step) + ": " + std::to_string(st.dofs) + " dofs, " + std::to_string(st.levels) +
+        " levels, estimate " + std::to_string(st.estimate) +
+        (st.energy_error ? ", energy error " + std::to_string(*st.energy_error) : std::string()));
+    r = res;
+    if (s.write_vtu) {
+      char name[32];
+      std::snprintf(name, sizeof name, "_step%03d.vtu", st.step);
+      const std::string file = base + name;
+      io::VtuOptions vo;
+      vo.samples = o.samples;
+      vo.exact = problem.exact;
+      io::write_vtu(file, g, res.u, vo, {{"indicator", est.indicators}});
+      const std::size_t slash = file.find_last_of('/');
+      series.push_back({static_cast<double>(st.step), slash == std::string::npos ? file : file.substr(slash + 1)});
+      io::write_pvd(base + ".pvd", series);
     }
-  } else {
-    r = fem::solve_poisson(geometry, *rules, problem, solver);
-    final_geometry = geometry;
-  }
-  auto fmt = [](double v) {
-    std::ostringstream s;
-    s << std::setprecision(4) << v;
-    return s.str();
   };
-  log("assembly " + fmt(r.assembly_seconds) + " s, solve " + fmt(r.solve_seconds) + " s (" + r.solver + ")");
+  const refine::AdaptiveRun run = refine::adaptive_solve(geometry, rules, problem, solver, ao, on_step);
+  const std::vector<refine::AdaptiveStep>& history = run.history;
+  if (run.stopped != "steps") log("adaptive loop stopped after step " + std::to_string(history.back().step) + ": " + run.stopped);
+  nlohmann::json adaptive_json = {{"steps", o.adaptive}, {"theta", o.theta}, {"marking", refine::to_string(ao.marking)},
+                                  {"max_dofs", o.max_dofs}, {"admissibility", o.admissibility}, {"stopped", run.stopped}};
+  if (s.write_vtu) adaptive_json["pvd"] = base + ".pvd";
+  for (const refine::AdaptiveStep& st : history) {
+    auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
+    adaptive_json["history"].push_back(
+        {{"step", st.step}, {"dofs", st.dofs}, {"elements", st.elements}, {"levels", st.levels},
+         {"quadrature_points", st.quadrature_points}, {"estimate", st.estimate}, {"energy_error", opt(st.energy_error)},
+         {"l2_error", opt(st.l2_error)}, {"efficiency_index", opt(st.efficiency)}, {"marked", st.marked},
+         {"added_for_admissibility", st.added},
+         {"seconds", {{"setup", st.setup_seconds}, {"assembly", st.assembly_seconds}, {"solve", st.solve_seconds},
+                      {"errors", st.error_seconds}, {"estimate", st.estimate_seconds}, {"mark", st.mark_seconds},
+                      {"refine", st.refine_seconds}}}});
+  }
+  return adaptive_json;
+}
 
+// The report's settings: what ran (io::run_info: program, version, every option) and what was asked for (basis,
+// mesh, degree, refinement, the problem's expressions, a built-in one's included).
+nlohmann::json report_settings(const Options& o, const Setup& s, const iga::refine::Refinement& refined,
+                               const iga::basis::BackendFacts& facts, const std::string& problem_name) {
   nlohmann::json j = o.run_info;
+  std::pair<std::string, std::string> builtin_text;  // the built-in problem's exact solution and source as text
+  if (!problem_name.empty()) {
+    const iga::fem::ManufacturedProblem mp = iga::fem::manufactured_problem(problem_name, o.reaction);
+    builtin_text = {mp.exact_expression, mp.source_expression};
+  }
   j["basis"] = o.basis;
   j["mesh"] = o.mesh.empty() ? "default:" + (o.geometry.empty() ? std::string("quarter-annulus") : o.geometry) : o.mesh;
-  j["dimension"] = geometry.dim();
-  j["orientation"] = geometry.orientation();
-  j["degree"] = degree;
-  j["refine"] = refine_steps;
+  j["dimension"] = refined.geometry.dim();
+  j["orientation"] = refined.geometry.orientation();
+  j["degree"] = s.degree;
+  j["refine"] = refine_steps(o, s);
   j["nested_refinement"] = refined.nested;
-  if (o.adaptive >= 0) j["adaptive"] = adaptive_json;
   if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
   for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
@@ -250,14 +268,20 @@ int run(const Options& o) {
                   {"neumann", o.neumann}, {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where},
                   {"exact", o.exact.empty() ? builtin_text.first : o.exact},
                   {"reaction", o.reaction}, {"mean_zero", o.mean_zero}};
+  return j;
+}
+
+// The report's results: the figures of the solve r (the last step's with --adaptive).
+void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const std::string& quadrature,
+                    const iga::fem::SolverOptions& solver) {
   j["dofs"] = r.dofs;
   j["free_dofs"] = r.free_dofs;
   j["dirichlet_dofs"] = r.dirichlet_dofs;
   j["elements"] = r.elements;
-  j["quadrature"] = rules->name();
+  j["quadrature"] = quadrature;
   j["quadrature_points"] = r.quadrature_points;
   j["domain_measure"] = r.domain_measure;
-  j["threads"] = fem::num_threads();
+  j["threads"] = iga::fem::num_threads();
   j["pattern_seconds"] = r.pattern_seconds;
   j["assembly_seconds"] = r.assembly_seconds;
   j["solve_seconds"] = r.solve_seconds;
@@ -277,24 +301,104 @@ int run(const Options& o) {
     // Relative errors where the exact solution has a norm to compare with (u = 0 has none: the key is left out).
     if (r.errors->l2_exact > 0) j["l2_error_relative"] = r.errors->l2 / r.errors->l2_exact;
     if (r.errors->h1_exact > 0) j["h1_error_relative"] = r.errors->h1 / r.errors->h1_exact;
-    log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
   }
-  if (write_vtu && o.adaptive < 0) {
+}
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << std::setprecision(4) << v;
+  return s.str();
+}
+
+// One run: the geometry refined o.refine times, solved (or the adaptive loop), the .vtu; returns the report.
+nlohmann::json solve_run(const Options& o) {
+  using namespace iga;
+  const auto t_start = std::chrono::steady_clock::now();
+  const Log log = make_log(o);
+  if (o.threads > 0) fem::set_num_threads(o.threads);
+  const Setup s = make_setup(o);
+  check_predicted_size(o, s);
+  basis::BackendFacts facts;
+  const refine::Refinement refined = make_geometry(o, s, facts);
+  for (const std::string& note : facts.notes) log(note);
+  const basis::Geometry& geometry = refined.geometry;
+  if (geometry.orientation() < 0) log("note: the planar net is oriented clockwise (det J < 0); solved as it is (the same solution)");
+  std::string problem_name;
+  const fem::PoissonProblem problem = make_problem(o, geometry, problem_name);
+  const std::unique_ptr<quadrature::RuleProvider> rules = make_rules(o, s);
+  const fem::SolverOptions solver{fem::parse_solver(o.solver)};
+
+  log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
+      std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
+  fem::PoissonResult r;
+  nlohmann::json j = report_settings(o, s, refined, facts, problem_name);
+  if (o.adaptive >= 0) {
+    j["adaptive"] = solve_adaptive(o, s, geometry, *rules, problem, solver, r, log);
+  } else {
+    r = fem::solve_poisson(geometry, *rules, problem, solver);
+  }
+  log("assembly " + fmt(r.assembly_seconds) + " s, solve " + fmt(r.solve_seconds) + " s (" + r.solver + ")");
+  report_results(j, r, rules->name(), solver);
+  if (r.errors) log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
+  if (s.write_vtu && o.adaptive < 0) {
     io::VtuOptions vo;
     vo.samples = o.samples;
     vo.exact = problem.exact;
     io::write_vtu(o.vtu, geometry, r.u, vo);
     j["vtu"] = o.vtu;
     log("wrote " + o.vtu);
-  } else if (write_vtu) {
-    log("wrote " + adaptive_json["pvd"].get<std::string>() + " and its " + std::to_string(adaptive_json["history"].size()) + " .vtu files");
+  } else if (s.write_vtu) {
+    log("wrote " + j["adaptive"]["pvd"].get<std::string>() + " and its " + std::to_string(j["adaptive"]["history"].size()) + " .vtu files");
   }
   j["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return j;
+}
+
+int run(const Options& o) {
+  const nlohmann::json j = solve_run(o);
   if (!o.json.empty() && o.json != "none") {
-    io::write_json(o.json, j);
-    log("wrote " + o.json);
+    iga::io::write_json(o.json, j);
+    make_log(o)("wrote " + o.json);
   }
   return 0;
+}
+
+// --study K0:K1: every level is solve_run with --refine K (and --degree P of --degrees), so a level's report is
+// the one a single run writes.
+int study(const Options& o) {
+  iga::bench::StudyOptions so;
+  so.levels = iga::bench::parse_levels(o.study);
+  if (!o.degrees.empty()) so.degrees = iga::bench::parse_degrees(o.degrees);
+  const std::vector<std::string>& takes = iga::basis::backend(o.basis).options;
+  if (!o.degrees.empty() && std::find(takes.begin(), takes.end(), "degree") == takes.end()) {
+    throw iga::InputError("--degrees: --basis " + o.basis + " has a fixed degree");
+  }
+  if (!o.source.empty() && o.exact.empty()) {
+    throw iga::InputError("--study needs an exact solution for its error norms: give --exact with --source (or --problem)");
+  }
+  so.output = o.study_output;
+  so.plots = o.plots;
+  so.vtu = o.vtu_given ? o.vtu : std::string();
+  so.json = o.json_given ? o.json : std::string();
+  so.quiet = o.quiet;
+  auto level = [&o](int degree, int refine, const std::string& vtu) {
+    Options lo = o;
+    lo.refine = refine;
+    if (degree > 0) {
+      lo.degree = degree;
+      if (!lo.count("degree")) lo.given.emplace_back("degree");
+    }
+    lo.vtu = vtu.empty() ? "none" : vtu;
+    lo.json = "none";
+    return lo;
+  };
+  iga::bench::StudyHooks hooks;
+  hooks.check_size = [&](int degree, int refine) {
+    const Options lo = level(degree, refine, o.vtu_given && o.vtu != "none" ? o.vtu : std::string());
+    check_predicted_size(lo, make_setup(lo));
+  };
+  hooks.solve = [&](int degree, int refine, const std::string& vtu) { return solve_run(level(degree, refine, vtu)); };
+  return iga::bench::run_study(so, hooks);
 }
 
 }  // namespace
@@ -339,6 +443,21 @@ int main(int argc, char** argv) {
   app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
+  auto* study_option = app.add_option("--study", o.study, "convergence study over refinement levels K0:K1 (at least 3), each solved in this process: a table with rates on stderr, PREFIX.csv, PREFIX.json, plots; with --vtu a .vtu per level and a .pvd")
+      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_levels(t); }, "K0:K1"))
+      ->excludes(app.get_option("--refine"))->excludes(app.get_option("--adaptive"));
+  app.add_option("--degrees", o.degrees, "--study, bspline: one series per degree, e.g. 2,3,4")
+      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_degrees(t); }, "P,P,..."))
+      ->needs(study_option)->excludes(app.get_option("--degree"));
+  app.add_option("--study-output", o.study_output, "--study: PREFIX of PREFIX.csv, PREFIX.json and the plots PREFIX_dofs.png/.svg, PREFIX_seconds.png/.svg ('none': no files)")
+      ->check(iga::io::non_blank())->needs(study_option)->capture_default_str();
+  app.add_option("--plots", o.plots, "--study: plot formats png,svg, png or svg (matplotlib, through /usr/bin/python3), or none")
+      ->check(CLI::Validator(
+          [](std::string& t) {
+            return t == "png,svg" || t == "png" || t == "svg" || t == "none" ? std::string() : "'" + t + "' is not png,svg, png, svg or none";
+          },
+          "png,svg|png|svg|none"))
+      ->needs(study_option)->capture_default_str();
   iga::io::CommonOptions common{"iga-poisson"};
   iga::io::add_common_options(app, common);
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
@@ -347,5 +466,7 @@ int main(int argc, char** argv) {
   for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
-  return iga::io::run_program("iga-poisson", [&] { return run(o); });
+  o.vtu_given = app.count("--vtu") > 0;
+  o.json_given = app.count("--json") > 0;
+  return iga::io::run_program("iga-poisson", [&] { return o.study.empty() ? run(o) : study(o); });
 }

@@ -13,20 +13,21 @@ and writes
   a CSV of every run (quantity, method, family, points per irregular element, relative error),
   a markdown table: per quantity and method family the fewest points per irregular element that reach the
     target relative error (default 1e-12), else the best error reached and its points,
-  an SVG plot: log10 relative error against points per irregular element, one panel per quantity, one
-    polyline per method family (tiles:P over L, macro:R over L), fitted rules as single markers.
+  a plot (matplotlib; SVG, and PNG with --png): relative error against points per irregular element, log-log,
+    one panel per quantity, one line per method family (tiles:P over L, macro:R over L), fitted rules as single
+    markers, the target as a dashed line.
 Relative error: |value - exact| / |exact| for area and volume, the relative Frobenius error for matrices.
 A method that does not apply (e.g. no fitted table for a valence) is listed as "n/a" with the reason.
 
-Usage: quadrature_sweep.py [--exe PATH] [--root DIR] [--svg FILE] [--csv FILE] [--markdown FILE]
-                           [--valences 3 5] [--target 1e-12]
-PATH defaults to the first build*/benchmarks/iga-quadrature under the source root. Standard library only.
+Usage: quadrature_sweep.py [--exe PATH] [--root DIR] [--svg FILE|none] [--png FILE] [--csv FILE]
+                           [--markdown FILE] [--valences 3 5] [--target 1e-12]
+PATH defaults to the first build*/benchmarks/iga-quadrature under the source root. Run it with /usr/bin/python3
+(Debian's matplotlib); without matplotlib, --svg none still gives the table and the CSV.
 """
 import argparse
 import csv
 import glob
 import json
-import math
 import os
 import subprocess
 import sys
@@ -125,56 +126,40 @@ def markdown(best, quantities, target):
     return "\n".join(lines) + "\n"
 
 
-COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22",
-           "#17becf"]
-
-
-def svg(rows, quantities, target):
+def plot(plt, rows, quantities, target, paths):
+    """One log-log panel per quantity (matplotlib): relative error against points per irregular element, one
+    line per method family, fitted rules as single markers, the target as a dashed line; saved to each path."""
+    shown = [q for q in quantities if any(r["quantity"] == q and r["error"] is not None for r in rows)]
     cols = 3
-    nrows = (len(quantities) + cols - 1) // cols
-    pw, ph, ml, mb, mt = 360, 260, 55, 40, 28
-    width, height = cols * pw + 20, nrows * ph + 20
-    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="10">'
-           % (width, height), '<rect width="100%" height="100%" fill="white"/>']
-    for idx, q in enumerate(quantities):
+    nrows = max(1, (len(shown) + cols - 1) // cols)
+    fig, axes = plt.subplots(nrows, cols, figsize=(4.2 * cols, 3.2 * nrows), squeeze=False)
+    for ax in axes.flat[len(shown):]:
+        ax.set_visible(False)
+    for ax, q in zip(axes.flat, shown):
         data = [r for r in rows if r["quantity"] == q and r["error"] is not None]
-        if not data:
-            continue
-        x0, y0 = (idx % cols) * pw + 10 + ml, (idx // cols) * ph + 10 + mt
-        w, h = pw - ml - 15, ph - mt - mb
-        xmax = max(r["points"] for r in data)
-        lx = lambda p: x0 + w * math.log10(max(p, 1)) / math.log10(max(xmax, 10) * 1.2)
-        emin, emax = -17.0, 0.0
-        ly = lambda e: y0 + h * (emax - max(emin, min(emax, math.log10(max(e, 1e-17))))) / (emax - emin)
-        out.append('<text x="%d" y="%d" font-size="12" font-weight="bold">%s</text>' % (x0, y0 - 10, q))
-        out.append('<rect x="%d" y="%d" width="%d" height="%d" fill="none" stroke="black"/>' % (x0, y0, w, h))
-        for e in range(-16, 1, 4):
-            out.append('<line x1="%d" x2="%d" y1="%.1f" y2="%.1f" stroke="#ddd"/>' % (x0, x0 + w, ly(10.0**e), ly(10.0**e)))
-            out.append('<text x="%d" y="%.1f" text-anchor="end">1e%d</text>' % (x0 - 3, ly(10.0**e) + 3, e))
-        out.append('<line x1="%d" x2="%d" y1="%.1f" y2="%.1f" stroke="black" stroke-dasharray="4 3"/>'
-                   % (x0, x0 + w, ly(target), ly(target)))
-        p = 1
-        while p <= xmax * 1.2:
-            out.append('<line x1="%.1f" x2="%.1f" y1="%d" y2="%d" stroke="#ddd"/>' % (lx(p), lx(p), y0, y0 + h))
-            out.append('<text x="%.1f" y="%d" text-anchor="middle">%d</text>' % (lx(p), y0 + h + 12, p))
-            p *= 10
-        out.append('<text x="%d" y="%d" text-anchor="middle">points per irregular element</text>'
-                   % (x0 + w // 2, y0 + h + 26))
         families = []
         for r in data:
             if r["family"] not in families:
                 families.append(r["family"])
-        for k, fam in enumerate(families):
-            colour = COLOURS[k % len(COLOURS)]
-            pts = sorted((r["points"], r["error"]) for r in data if r["family"] == fam)
-            coords = " ".join("%.1f,%.1f" % (lx(a), ly(b)) for a, b in pts)
+        for fam in families:
+            pts = sorted((r["points"], max(r["error"], 1e-17)) for r in data if r["family"] == fam)
+            xs, ys = [a for a, _ in pts], [b for _, b in pts]
             if len(pts) > 1:
-                out.append('<polyline points="%s" fill="none" stroke="%s" stroke-width="1.2"/>' % (coords, colour))
-            for a, b in pts:
-                out.append('<circle cx="%.1f" cy="%.1f" r="%d" fill="%s"/>' % (lx(a), ly(b), 2 if len(pts) > 1 else 4, colour))
-            out.append('<text x="%d" y="%d" fill="%s">%s</text>' % (x0 + w - 70, y0 + 10 + 10 * k, colour, fam))
-    out.append("</svg>")
-    return "\n".join(out) + "\n"
+                ax.loglog(xs, ys, "-o", markersize=2.5, linewidth=1.2, label=fam)
+            else:
+                ax.loglog(xs, ys, "D", markersize=6, label=fam)
+        ax.axhline(target, color="black", linestyle="--", linewidth=0.8)
+        ax.set_ylim(1e-17, 1.0)
+        ax.set_title(q, fontsize=10, fontweight="bold")
+        ax.set_xlabel("points per irregular element", fontsize=8)
+        ax.set_ylabel("relative error", fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.grid(True, which="major", linewidth=0.3)
+        ax.legend(fontsize=6, ncol=2)
+    fig.tight_layout()
+    for path in paths:
+        fig.savefig(path)
+    plt.close(fig)
 
 
 def main():
@@ -182,12 +167,23 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--exe", help="iga-quadrature executable")
     ap.add_argument("--root", default=os.path.dirname(here), help="source tree (for data/)")
-    ap.add_argument("--svg", default=os.path.join(here, "quadrature_error.svg"))
+    ap.add_argument("--svg", default=os.path.join(here, "quadrature_error.svg"), help="plot as SVG ('none': not)")
+    ap.add_argument("--png", help="the plot also as PNG")
     ap.add_argument("--csv", help="CSV of every run")
     ap.add_argument("--markdown", help="markdown summary table (default: stdout only)")
     ap.add_argument("--valences", type=int, nargs="*", default=[3, 5], help="single-element valences for mass/stiffness")
     ap.add_argument("--target", type=float, default=1e-12)
     a = ap.parse_args()
+    paths = [p for p in (a.svg, a.png) if p and p != "none"]
+    plt = None
+    if paths:  # before the sweep: a missing matplotlib stops it at once, not after the runs
+        try:
+            import matplotlib
+            matplotlib.use("Agg")
+            matplotlib.rcParams["svg.fonttype"] = "none"  # text as text: smaller, editable SVG
+            import matplotlib.pyplot as plt
+        except ImportError as e:
+            sys.exit("quadrature_sweep.py: cannot import matplotlib (%s); --svg none skips the plot" % e)
     exe = a.exe or find_exe(a.root)
     if not os.access(exe, os.X_OK):
         sys.exit("quadrature_sweep.py: not an executable: %s" % exe)
@@ -214,9 +210,9 @@ def main():
     if a.markdown:
         with open(a.markdown, "w") as f:
             f.write(table)
-    with open(a.svg, "w") as f:
-        f.write(svg(rows, quantities, a.target))
-    print("wrote %s" % a.svg, file=sys.stderr)
+    if paths:
+        plot(plt, rows, quantities, a.target, paths)
+        print("wrote %s" % ", ".join(paths), file=sys.stderr)
 
 
 if __name__ == "__main__":
