@@ -19,6 +19,8 @@
 #include "fem/threads.hpp"
 #include "io/program.hpp"
 #include "io/report.hpp"
+#include "io/net_writer.hpp"
+#include "io/vtu_output.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
 #include "quadrature/rule_provider.hpp"
@@ -31,9 +33,9 @@ namespace {
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
-  std::string geometry, mark = "doerfler";
+  std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu;
   int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
-  int adaptive = -1, admissibility = 2;
+  int adaptive = -1, admissibility = 2, vtu_degree = 6;
   long long max_dofs = 0;
   double theta = 0.5;
   double reaction = 0.0;
@@ -86,10 +88,10 @@ int run(const Options& o) {
   const double max_bytes = o.max_memory * 1024.0 * 1024.0 * 1024.0;
   auto check_size = [&](double elements, const std::string& what) {
     fem::check_memory(fem::poisson_memory(elements, (degree + 1) * (degree + 1)) +
-                          (write_vtu ? fem::vtu_memory(elements, o.samples) : 0.0),
+                          (write_vtu ? fem::vtu_memory(elements, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1) : 0.0),
                       max_bytes, what,
                       "each --refine or --presubdivide step needs four times more" +
-                          (write_vtu ? "; --vtu-samples " + std::to_string(o.samples) + " writes " +
+                          (write_vtu && o.vtu_format == "linear" ? "; --vtu-samples " + std::to_string(o.samples) + " writes " +
                                            std::to_string(o.samples * o.samples) + " points per element"
                                      : std::string()));
   };
@@ -172,6 +174,11 @@ int run(const Options& o) {
   // --adaptive: solve → estimate → mark → refine, one .vtu per step and a .pvd series; the report's top-level
   // figures are the last step's.
   fem::PoissonResult r;
+  io::VtuOutput vtu_output;
+  vtu_output.format = o.vtu_format;
+  vtu_output.samples = o.samples;
+  vtu_output.degree = o.vtu_degree;
+  vtu_output.exact = problem.exact;
   std::optional<basis::Geometry> final_geometry;
   nlohmann::json adaptive_json;
   if (o.adaptive >= 0) {
@@ -193,10 +200,7 @@ int run(const Options& o) {
         char name[32];
         std::snprintf(name, sizeof name, "_step%03d.vtu", s.step);
         const std::string file = base + name;
-        io::VtuOptions vo;
-        vo.samples = o.samples;
-        vo.exact = problem.exact;
-        io::write_vtu(file, g, res.u, vo, {{"indicator", est.indicators}});
+        io::write_output(file, g, &res.u, vtu_output, {{"indicator", est.indicators}});
         const std::size_t slash = file.find_last_of('/');
         series.push_back({static_cast<double>(s.step), slash == std::string::npos ? file : file.substr(slash + 1)});
         io::write_pvd(base + ".pvd", series);
@@ -275,15 +279,19 @@ int run(const Options& o) {
     if (r.errors->h1_exact > 0) j["h1_error_relative"] = r.errors->h1 / r.errors->h1_exact;
     log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
   }
+  if (write_vtu) j["vtu_output"] = vtu_output.settings();
   if (write_vtu && o.adaptive < 0) {
-    io::VtuOptions vo;
-    vo.samples = o.samples;
-    vo.exact = problem.exact;
-    io::write_vtu(o.vtu, geometry, r.u, vo);
+    const std::vector<std::string> files = io::write_output(o.vtu, geometry, &r.u, vtu_output);
     j["vtu"] = o.vtu;
-    log("wrote " + o.vtu);
+    if (files.size() > 1) j["vtu_outline"] = files[1];
+    for (const std::string& f : files) log("wrote " + f);
   } else if (write_vtu) {
     log("wrote " + adaptive_json["pvd"].get<std::string>() + " and its " + std::to_string(adaptive_json["history"].size()) + " .vtu files");
+  }
+  if (!o.net_vtu.empty()) {
+    io::write_control_net_vtu(o.net_vtu, final_geometry ? *final_geometry : geometry, net ? &*net : nullptr);
+    j["net_vtu"] = o.net_vtu;
+    log("wrote " + o.net_vtu);
   }
   j["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   if (!o.json.empty() && o.json != "none") {
@@ -332,7 +340,10 @@ int main(int argc, char** argv) {
   app.add_option("--solver", o.solver, "cholmod or cg")->capture_default_str();
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();
-  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
+  app.add_option("--vtu-samples", o.samples, "--vtu-format linear: sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
+  app.add_option("--vtu-format", o.vtu_format, "bezier: one exact Bezier cell per polynomial element (an interpolating one of degree --vtu-degree at extraordinary vertices), points shared, plus <base>_outline.vtu with the element edges; linear: --vtu-samples linear cells per element")->check(CLI::IsMember(iga::io::vtu_formats()))->capture_default_str();
+  app.add_option("--vtu-degree", o.vtu_degree, "--vtu-format bezier: degree of the cells of elements that are not polynomial")->check(iga::io::whole_number(1, 16))->capture_default_str();
+  app.add_option("--net", o.net_vtu, "write the control net to this .vtu: the control points, and the --mesh faces whose corners are control points as polygons")->check(iga::io::non_blank());
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
   app.add_flag("--quiet", o.quiet, "no progress on stderr");

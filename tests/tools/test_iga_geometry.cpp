@@ -3,6 +3,7 @@
 // points), the .vtu read back with VTK, and one clear error line with a non-zero exit on bad input.
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
@@ -105,7 +106,7 @@ bool contains_point(const std::vector<Eigen::RowVector3d>& pts, const Eigen::Row
 
 TEST_F(IgaGeometry, PolyhedralRegularGrid) {
   write("grid.obj", grid_obj(5));
-  const Outcome r = run("--basis polyhedral --mesh grid.obj --bv out.bv --vtu out.vtu --vtu-samples 5 --json out.json");
+  const Outcome r = run("--basis polyhedral --mesh grid.obj --bv out.bv --vtu out.vtu --vtu-format linear --vtu-samples 5 --json out.json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = report("out.json");
   // 9 interior vertices, each a regular configuration with one bi-2 patch (paper Section 3 (1)).
@@ -139,6 +140,7 @@ TEST_F(IgaGeometry, PolyhedralRegularGrid) {
   reader->Update();
   ASSERT_NE(reader->GetOutput(), nullptr);
   EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 9 * 16);
+  EXPECT_EQ(reader->GetOutput()->GetPointData()->GetArray("u"), nullptr);  // the geometry alone: no field
 
   // --degree-raise: the same patches as bi-3; corners (interpolated) unchanged.
   ASSERT_EQ(run("--mesh grid.obj --bv raised.bv --degree-raise --quiet").code, 0);
