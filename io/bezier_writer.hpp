@@ -30,6 +30,9 @@ struct BezierOptions {
 ///  - other elements: an interpolant inside; a side shared with a polynomial element of degree <= d is exact
 ///    (it is a polynomial curve), and a side shared with another element of the same degree gets the same control
 ///    points (the nodes on a side are symmetric about its midpoint), so the surface has no cracks.
+/// Known limitation: in a locally refined (hierarchical) space a side of a non-polynomial element that meets several
+/// finer elements is one interpolating curve against their finer cells; cracks of the interpolation error's size
+/// remain there (3e-4 of the size on test_bezier_writer's locally refined Catmull–Clark torus, degree 6).
 /// Control points on element sides are merged (BezierOptions::merge_tolerance); interior ones are the cell's own.
 struct BezierMesh {
   Eigen::Matrix3Xd points;  ///< control points (physical; z = 0 for planar geometries)

