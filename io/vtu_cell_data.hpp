@@ -11,14 +11,11 @@
 #include <vtkSmartPointer.h>
 
 #include "basis/space.hpp"
+#include "io/element_data.hpp"
 
 class vtkUnstructuredGrid;
 
 namespace iga::io {
-
-/// Extra cell data: named values, one per element (e.g. "indicator", an error estimator's η_K), written on every
-/// VTK cell of the element.
-using ElementData = std::vector<std::pair<std::string, Eigen::VectorXd>>;
 
 /// A double array of `tuples` tuples with `components` components.
 vtkSmartPointer<vtkDoubleArray> make_double_array(const char* name, int components, Index tuples);

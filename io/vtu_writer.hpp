@@ -9,6 +9,7 @@
 
 #include "basis/geometry.hpp"
 #include "fem/function.hpp"
+#include "io/element_data.hpp"
 
 namespace iga::io {
 
@@ -17,9 +18,6 @@ struct VtuOptions {
   std::shared_ptr<const fem::Function> exact;  ///< optional exact solution
 };
 
-/// Extra cell data for write_vtu: named values, one per element (e.g. "indicator", an error estimator's η_K),
-/// written on every VTK cell of the element.
-using ElementData = std::vector<std::pair<std::string, Eigen::VectorXd>>;  // as in vtu_cell_data.hpp
 
 /// One step of a series for ParaView: a .vtu file and its time (the adaptive step).
 struct SeriesEntry {
