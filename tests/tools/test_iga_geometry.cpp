@@ -179,9 +179,19 @@ TEST_F(IgaGeometry, BsplineByBezierExtraction) {
 
 TEST_F(IgaGeometry, CatmullClarkRegularElementsAndSkippedOnes) {
   write("grid.obj", grid_obj(7));
-  ASSERT_EQ(run("--basis cc --mesh grid.obj --bv out.bv --json out.json --vtu out.vtu").code, 0);
+  ASSERT_EQ(run("--basis cc --mesh grid.obj --bv out.bv --json out.json --vtu out.vtu --net net.vtu").code, 0);
   const auto j = report("out.json");
   EXPECT_EQ(j["elements"], 36);
+  // --net: the 7 × 7 control points (the net's vertices, no global step needed) and the 36 faces as polygons.
+  EXPECT_EQ(j["net_vtu"], "net.vtu");
+  auto net_reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  net_reader->SetFileName((dir_ / "net.vtu").string().c_str());
+  net_reader->Update();
+  EXPECT_EQ(net_reader->GetOutput()->GetNumberOfPoints(), 49);
+  EXPECT_EQ(net_reader->GetOutput()->GetNumberOfCells(), 49 + 36);
+  // The default --vtu-format bezier: one bi-3 cell per element, the outline beside it, no u.
+  EXPECT_EQ(j["vtu_output"]["format"], "bezier");
+  EXPECT_TRUE(fs::exists(dir_ / "out_outline.vtu"));
   EXPECT_EQ(j["bv_patches"].get<int>() + j["bv_skipped"].get<int>(), 36);
   const auto patches = iga::io::read_bv((dir_ / "out.bv").string());
   ASSERT_EQ(static_cast<int>(patches.size()), j["bv_patches"].get<int>());
