@@ -19,6 +19,7 @@
 
 #include "basis/basis_values.hpp"
 #include "core/error.hpp"
+#include "io/bezier_hanging.hpp"
 #include "io/bezier_layout.hpp"
 #include "io/vtk_file.hpp"
 #include "io/vtu_cell_data.hpp"
@@ -91,12 +92,7 @@ std::pair<Eigen::Vector3d, double> merge_frame(const basis::Geometry& geometry, 
   return {lo - Eigen::Vector3d::Constant(2.0 * tol), tol};
 }
 
-/// Control points of element e: x (n × 3), u and exact (n; left empty when not asked for), in the layout's order.
-struct CellControl {
-  Eigen::MatrixXd x;
-  Eigen::VectorXd u, exact;
-};
-
+/// Control points of element e (CellControl, bezier_hanging.hpp) in the layout's order.
 void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorXd* u, const fem::Function* exact,
                   const BezierLayout& layout, CellControl& out) {
   const basis::Space& space = geometry.space();
@@ -121,6 +117,32 @@ void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorX
   }
 }
 
+/// Every cell's layout and control points, hanging sides of non-polynomial elements followed (bezier_hanging.hpp);
+/// exact[e]: the cell is exact (polynomial element, no side that follows a coarser non-polynomial one).
+void all_cells(const basis::Geometry& geometry, const Eigen::VectorXd* u, const BezierOptions& options,
+               std::vector<const BezierLayout*>& layout, std::vector<CellControl>& control, std::vector<bool>& exact) {
+  const basis::Space& space = geometry.space();
+  const auto ne = static_cast<std::size_t>(space.num_elements());
+  std::vector<int> degree(ne);
+  exact.assign(ne, false);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const std::optional<int> d = space.polynomial_degree(static_cast<Index>(e));
+    degree[e] = d.value_or(options.degree);
+    exact[e] = d.has_value();
+  }
+  const std::vector<HangingSide> hanging = hanging_sides(space, degree);
+  layout.resize(ne);
+  control.resize(ne);
+  for (std::size_t e = 0; e < ne; ++e) {
+    layout[e] = &bezier_layout(space.kind(static_cast<Index>(e)).shape, degree[e]);
+    cell_control(static_cast<Index>(e), geometry, u, options.exact.get(), *layout[e], control[e]);
+  }
+  for (const HangingSide& h : hanging) {
+    follow_coarse_side(h, layout, control);
+    exact[static_cast<std::size_t>(h.fine)] = false;
+  }
+}
+
 }  // namespace
 
 BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u, const BezierOptions& options) {
@@ -134,26 +156,29 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
   const double u_scale = u != nullptr && u->size() > 0 ? u->cwiseAbs().maxCoeff() : 0.0;
   PointMerger merger(lo, tol, options.merge_tolerance * u_scale);
 
+  std::vector<const BezierLayout*> layout;
+  std::vector<CellControl> control;
+  std::vector<bool> exact_cell;
+  all_cells(geometry, u, options, layout, control, exact_cell);
   BezierMesh mesh;
   std::vector<double> u_values, exact_values;
-  CellControl control;
   for (Index e = 0; e < space.num_elements(); ++e) {
-    const std::optional<int> exact_degree = space.polynomial_degree(e);
-    const BezierLayout& layout = bezier_layout(space.kind(e).shape, exact_degree.value_or(options.degree));
-    cell_control(e, geometry, u, options.exact.get(), layout, control);
-    for (int k = 0; k < layout.num_points(); ++k) {
-      const double uk = u != nullptr ? control.u(k) : 0.0;
-      const Index id = merger.insert(control.x.row(k).transpose(), uk, layout.on_side[static_cast<std::size_t>(k)]);
+    const BezierLayout& l = *layout[static_cast<std::size_t>(e)];
+    const CellControl& c = control[static_cast<std::size_t>(e)];
+    for (int k = 0; k < l.num_points(); ++k) {
+      const double uk = u != nullptr ? c.u(k) : 0.0;
+      const Index id = merger.insert(c.x.row(k).transpose(), uk, l.on_side[static_cast<std::size_t>(k)]);
       if (id == static_cast<Index>(u_values.size())) {
         u_values.push_back(uk);
-        exact_values.push_back(options.exact ? control.exact(k) : 0.0);
+        exact_values.push_back(options.exact ? c.exact(k) : 0.0);
       }
       mesh.connectivity.push_back(id);
     }
     mesh.offsets.push_back(static_cast<Index>(mesh.connectivity.size()));
-    mesh.degree.push_back(layout.degree);
-    mesh.shape.push_back(layout.shape);
-    if (exact_degree) ++mesh.num_polynomial;
+    mesh.degree.push_back(l.degree);
+    mesh.shape.push_back(l.shape);
+    mesh.exact_cell.push_back(exact_cell[static_cast<std::size_t>(e)]);
+    if (exact_cell[static_cast<std::size_t>(e)]) ++mesh.num_polynomial;
   }
   const auto& pts = merger.points();
   mesh.points.resize(3, static_cast<Eigen::Index>(pts.size()));

@@ -30,9 +30,10 @@ struct BezierOptions {
 ///  - other elements: an interpolant inside; a side shared with a polynomial element of degree <= d is exact
 ///    (it is a polynomial curve), and a side shared with another element of the same degree gets the same control
 ///    points (the nodes on a side are symmetric about its midpoint), so the surface has no cracks.
-/// Known limitation: in a locally refined (hierarchical) space a side of a non-polynomial element that meets several
-/// finer elements is one interpolating curve against their finer cells; cracks of the interpolation error's size
-/// remain there (3e-4 of the size on test_bezier_writer's locally refined Catmull–Clark torus, degree 6).
+/// In a locally refined (hierarchical) space, a side of a non-polynomial element that meets several finer elements is
+/// one interpolating curve: the finer cells along it take that curve (restricted to their piece, at the coarse cell's
+/// degree or higher; bezier_hanging.hpp), so they are exact except along that side, and there are no cracks there
+/// either.
 /// Control points on element sides are merged (BezierOptions::merge_tolerance); interior ones are the cell's own.
 struct BezierMesh {
   Eigen::Matrix3Xd points;  ///< control points (physical; z = 0 for planar geometries)
@@ -42,7 +43,8 @@ struct BezierMesh {
   std::vector<Index> connectivity;
   std::vector<int> degree;             ///< per cell
   std::vector<basis::Shape> shape;     ///< per cell
-  Index num_polynomial = 0;            ///< cells that are exact (polynomial elements)
+  std::vector<bool> exact_cell;        ///< per cell: x and u exact on the whole cell
+  Index num_polynomial = 0;            ///< cells that are exact
 
   Index num_cells() const { return static_cast<Index>(degree.size()); }
 };
