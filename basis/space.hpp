@@ -73,6 +73,11 @@ class Space {
   /// For exact integration of an infinitely piecewise element (subdivision_view.hpp): its tiles and
   /// subdivision structure; std::nullopt for polynomial elements and backends without one.
   virtual std::optional<SubdivisionElement> subdivision_element(Index) const { return std::nullopt; }
+  /// The degree d such that every local function of element e is, on the element's whole reference domain, one
+  /// polynomial of degree at most d in each of u and v (Quad shape) or of total degree at most d (Triangle shape);
+  /// std::nullopt (the default) for an infinitely piecewise element (at an extraordinary vertex or face) and for
+  /// backends that do not say. Output uses it to write such elements exactly as Bézier cells (io/bezier_writer).
+  virtual std::optional<int> polynomial_degree(Index) const { return std::nullopt; }
 };
 
 }  // namespace iga::basis

@@ -20,7 +20,10 @@
 #include "fem/problems.hpp"
 #include "fem/threads.hpp"
 #include "io/program.hpp"
+#include "io/net_writer.hpp"
+#include "io/progress.hpp"
 #include "io/report.hpp"
+#include "io/vtu_output.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
 #include "quadrature/rule_provider.hpp"
@@ -33,9 +36,9 @@ namespace {
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
-  std::string geometry, mark = "doerfler";
+  std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu;
   int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
-  int adaptive = -1, admissibility = 2;
+  int adaptive = -1, admissibility = 2, vtu_degree = 6;
   long long max_dofs = 0;
   double theta = 0.5;
   double reaction = 0.0;
@@ -43,6 +46,7 @@ struct Options {
   bool quiet = false, mean_zero = false;
   std::string study, degrees, study_output = "study", plots = "png,svg";  ///< --study K0:K1 and its options
   bool vtu_given = false, json_given = false;
+  bool timer_table = true;  ///< the time per phase on stderr at the end (not for the levels of a study)
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
   bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
@@ -102,10 +106,10 @@ int refine_steps(const Options& o, const Setup& s) { return o.refine >= 0 ? o.re
 // Size before work: the memory of the solve and the output for this many elements, against what is available.
 void check_size(const Options& o, const Setup& s, double elements, const std::string& what) {
   iga::fem::check_memory(iga::fem::poisson_memory(elements, (s.degree + 1) * (s.degree + 1)) +
-                             (s.write_vtu ? iga::fem::vtu_memory(elements, o.samples) : 0.0),
+                             (s.write_vtu ? iga::fem::vtu_memory(elements, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1) : 0.0),
                          o.max_memory * 1024.0 * 1024.0 * 1024.0, what,
                          "each --refine or --presubdivide step needs four times more" +
-                             (s.write_vtu ? "; --vtu-samples " + std::to_string(o.samples) + " writes " +
+                             (s.write_vtu && o.vtu_format == "linear" ? "; --vtu-samples " + std::to_string(o.samples) + " writes " +
                                                 std::to_string(o.samples * o.samples) + " points per element"
                                           : std::string()));
 }
@@ -195,7 +199,8 @@ std::unique_ptr<iga::quadrature::RuleProvider> make_rules(const Options& o, cons
 // Returns the report's "adaptive" object.
 nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis::Geometry& geometry,
                               const iga::quadrature::RuleProvider& rules, const iga::fem::PoissonProblem& problem,
-                              const iga::fem::SolverOptions& solver, iga::fem::PoissonResult& r, const Log& log) {
+                              const iga::fem::SolverOptions& solver, const iga::io::VtuOutput& vtu_output,
+                              iga::fem::PoissonResult& r, std::optional<iga::basis::Geometry>& last, const Log& log) {
   using namespace iga;
   refine::AdaptiveOptions ao;
   ao.steps = o.adaptive;
@@ -210,14 +215,12 @@ nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis
         " levels, estimate " + std::to_string(st.estimate) +
         (st.energy_error ? ", energy error " + std::to_string(*st.energy_error) : std::string()));
     r = res;
+    last = g;
     if (s.write_vtu) {
       char name[32];
       std::snprintf(name, sizeof name, "_step%03d.vtu", st.step);
       const std::string file = base + name;
-      io::VtuOptions vo;
-      vo.samples = o.samples;
-      vo.exact = problem.exact;
-      io::write_vtu(file, g, res.u, vo, {{"indicator", est.indicators}});
+      io::write_output(file, g, &res.u, vtu_output, {{"indicator", est.indicators}});
       const std::size_t slash = file.find_last_of('/');
       series.push_back({static_cast<double>(st.step), slash == std::string::npos ? file : file.substr(slash + 1)});
       io::write_pvd(base + ".pvd", series);
@@ -310,16 +313,30 @@ std::string fmt(double v) {
   return s.str();
 }
 
+// The pipeline's steps (fem::PoissonSolver) as phases, so a long one says so while it runs; the result is
+// solve_poisson's.
+iga::fem::PoissonResult solve_in_phases(const iga::basis::Geometry& geometry, const iga::quadrature::RuleProvider& rules,
+                                        const iga::fem::PoissonProblem& problem, const iga::fem::SolverOptions& solver,
+                                        iga::io::Progress& progress) {
+  iga::fem::PoissonSolver p(geometry, rules, problem, solver);
+  progress.phase("setup and pattern", [&] { p.setup(); });
+  progress.phase("assembly", [&] { p.assemble(); });
+  progress.phase("factorisation and solve", [&] { p.solve(); });
+  progress.phase("error norms", [&] { p.errors(); });
+  return p.result();
+}
+
 // One run: the geometry refined o.refine times, solved (or the adaptive loop), the .vtu; returns the report.
 nlohmann::json solve_run(const Options& o) {
   using namespace iga;
   const auto t_start = std::chrono::steady_clock::now();
   const Log log = make_log(o);
   if (o.threads > 0) fem::set_num_threads(o.threads);
+  io::Progress progress("iga-poisson", o.quiet);
   const Setup s = make_setup(o);
   check_predicted_size(o, s);
   basis::BackendFacts facts;
-  const refine::Refinement refined = make_geometry(o, s, facts);
+  const refine::Refinement refined = progress.phase("refinement", [&] { return make_geometry(o, s, facts); });
   for (const std::string& note : facts.notes) log(note);
   const basis::Geometry& geometry = refined.geometry;
   if (geometry.orientation() < 0) log("note: the planar net is oriented clockwise (det J < 0); solved as it is (the same solution)");
@@ -332,25 +349,40 @@ nlohmann::json solve_run(const Options& o) {
       std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
   fem::PoissonResult r;
   nlohmann::json j = report_settings(o, s, refined, facts, problem_name);
+  io::VtuOutput vtu_output;
+  vtu_output.format = o.vtu_format;
+  vtu_output.samples = o.samples;
+  vtu_output.degree = o.vtu_degree;
+  vtu_output.exact = problem.exact;
+  std::optional<basis::Geometry> last;  // the adaptive loop's last geometry
   if (o.adaptive >= 0) {
-    j["adaptive"] = solve_adaptive(o, s, geometry, *rules, problem, solver, r, log);
+    j["adaptive"] = progress.phase("adaptive loop", [&] {
+      return solve_adaptive(o, s, geometry, *rules, problem, solver, vtu_output, r, last, log);
+    });
   } else {
-    r = fem::solve_poisson(geometry, *rules, problem, solver);
+    r = solve_in_phases(geometry, *rules, problem, solver, progress);
   }
   log("assembly " + fmt(r.assembly_seconds) + " s, solve " + fmt(r.solve_seconds) + " s (" + r.solver + ")");
   report_results(j, r, rules->name(), solver);
   if (r.errors) log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
+  if (s.write_vtu) j["vtu_output"] = vtu_output.settings();
   if (s.write_vtu && o.adaptive < 0) {
-    io::VtuOptions vo;
-    vo.samples = o.samples;
-    vo.exact = problem.exact;
-    io::write_vtu(o.vtu, geometry, r.u, vo);
+    const std::vector<std::string> files =
+        progress.phase("output", [&] { return io::write_output(o.vtu, geometry, &r.u, vtu_output); });
     j["vtu"] = o.vtu;
-    log("wrote " + o.vtu);
+    if (files.size() > 1) j["vtu_outline"] = files[1];
+    for (const std::string& f : files) log("wrote " + f);
   } else if (s.write_vtu) {
     log("wrote " + j["adaptive"]["pvd"].get<std::string>() + " and its " + std::to_string(j["adaptive"]["history"].size()) + " .vtu files");
   }
+  if (io::writes(o.net_vtu)) {
+    io::write_control_net_vtu(o.net_vtu, last ? *last : geometry, s.net ? &*s.net : nullptr);
+    j["net_vtu"] = o.net_vtu;
+    log("wrote " + o.net_vtu);
+  }
   j["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  j["phase_seconds"] = progress.json();
+  if (o.timer_table) progress.print_table();
   return j;
 }
 
@@ -390,6 +422,7 @@ int study(const Options& o) {
     }
     lo.vtu = vtu.empty() ? "none" : vtu;
     lo.json = "none";
+    lo.timer_table = false;
     return lo;
   };
   iga::bench::StudyHooks hooks;
@@ -440,7 +473,10 @@ int main(int argc, char** argv) {
   app.add_option("--solver", o.solver, "cholmod or cg")->capture_default_str();
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();
-  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
+  app.add_option("--vtu-samples", o.samples, "--vtu-format linear: sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
+  app.add_option("--vtu-format", o.vtu_format, "bezier: one exact Bezier cell per polynomial element (an interpolating one of degree --vtu-degree at extraordinary vertices), points shared, plus <base>_outline.vtu with the element edges; linear: --vtu-samples linear cells per element")->check(CLI::IsMember(iga::io::vtu_formats()))->capture_default_str();
+  app.add_option("--vtu-degree", o.vtu_degree, "--vtu-format bezier: degree of the cells of elements that are not polynomial")->check(iga::io::whole_number(1, 16))->capture_default_str();
+  app.add_option("--net", o.net_vtu, "write the control net to this .vtu: the control points, and the --mesh faces whose corners are control points as polygons")->check(iga::io::non_blank());
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
   auto* study_option = app.add_option("--study", o.study, "convergence study over refinement levels K0:K1 (at least 3), each solved in this process: a table with rates on stderr, PREFIX.csv, PREFIX.json, plots; with --vtu a .vtu per level and a .pvd")

@@ -28,6 +28,7 @@
 #include "basis/element_kind.hpp"
 #include "core/error.hpp"
 #include "io/vtk_file.hpp"
+#include "io/vtu_cell_data.hpp"
 
 namespace iga::io {
 
@@ -98,48 +99,68 @@ SamplePattern triangle_pattern(int samples) {
   return p;
 }
 
-vtkNew<vtkDoubleArray> make_double_array(const char* name, int components, Index tuples) {
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  a->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
-  return a;
-}
-
 // Values (and, when `grads` is not null, physical gradients) of the written field at element e's sample points.
 using Sampler = std::function<void(Index e, const Eigen::Matrix2Xd& ref, const basis::BasisValues& bv,
                                    const basis::GeometryValues& gv, Eigen::VectorXd& values, Eigen::Matrix3Xd* grads)>;
 
-void write_samples(const std::string& path, const basis::Geometry& geometry, const Sampler& sample, bool with_grad,
+/// The point arrays of the sampled grid ("u", "grad_u", "exact", "error"; the ones not written are empty).
+struct SampleArrays {
+  vtkSmartPointer<vtkDoubleArray> x, u, grad, exact, error;
+};
+
+/// Samples element e into the arrays from point `base` on.
+void sample_element(Index e, const basis::Geometry& geometry, const SamplePattern& p, const Sampler* sample,
+                    const VtuOptions& options, Index base, SampleArrays& a) {
+  thread_local basis::BasisValues bv;
+  thread_local basis::GeometryValues gv;
+  thread_local Eigen::VectorXd values, exact_values;
+  thread_local Eigen::Matrix3Xd grads;
+  geometry.space().evaluate(e, p.points, 1, bv);
+  geometry.evaluate(e, bv, gv, /*check=*/false);
+  const bool with_grad = a.grad != nullptr, with_exact = a.exact != nullptr;
+  if (sample != nullptr) (*sample)(e, p.points, bv, gv, values, with_grad ? &grads : nullptr);
+  if (with_exact) options.exact->values(gv.x, exact_values);
+  for (Index k = 0; k < p.num_points(); ++k) {
+    const vtkIdType g = static_cast<vtkIdType>(base + k);
+    a.x->SetTuple3(g, gv.x(0, k), gv.x(1, k), gv.x(2, k));
+    if (with_grad) a.grad->SetTuple3(g, grads(0, k), grads(1, k), grads(2, k));
+    if (sample != nullptr) a.u->SetValue(g, values(k));
+    if (with_exact) {
+      a.exact->SetValue(g, exact_values(k));
+      if (sample != nullptr) a.error->SetValue(g, values(k) - exact_values(k));
+    }
+  }
+}
+
+/// sample == nullptr: the geometry alone (no "u", "grad_u" or "error"; "exact" with options.exact).
+void write_samples(const std::string& path, const basis::Geometry& geometry, const Sampler* sample, bool with_grad,
                    const VtuOptions& options, const ElementData& element_data) {
   const basis::Space& space = geometry.space();
   if (options.samples < 2) {
     throw InputError("write_vtu: samples must be at least 2, got " + std::to_string(options.samples));
   }
-
+  check_element_data(space, element_data);
   const std::array<SamplePattern, 2> patterns = {quad_pattern(options.samples), triangle_pattern(options.samples)};
-  const auto pattern_of = [&](const basis::ElementKind& k) -> const SamplePattern& {
-    return patterns[k.shape == basis::Shape::Triangle ? 1 : 0];
+  const auto pattern_of = [&](Index e) -> const SamplePattern& {
+    return patterns[space.kind(e).shape == basis::Shape::Triangle ? 1 : 0];
   };
 
   // Sizes up front, so every array is allocated once.
   const Index num_elements = space.num_elements();
-  Index total_points = 0;
-  Index total_cells = 0;
-  Index total_connectivity = 0;
+  Index total_points = 0, total_cells = 0, total_connectivity = 0;
   for (Index e = 0; e < num_elements; ++e) {
-    const SamplePattern& p = pattern_of(space.kind(e));
+    const SamplePattern& p = pattern_of(e);
     total_points += p.num_points();
     total_cells += p.num_cells();
     total_connectivity += static_cast<Index>(p.cells.size());
   }
-
-  auto coords = make_double_array("Points", 3, total_points);
-  auto u_array = make_double_array("u", 1, total_points);
-  auto grad_array = make_double_array("grad_u", 3, with_grad ? total_points : 0);
-  const bool with_exact = static_cast<bool>(options.exact);
-  auto exact_array = make_double_array("exact", 1, with_exact ? total_points : 0);
-  auto error_array = make_double_array("error", 1, with_exact ? total_points : 0);
+  const bool with_u = sample != nullptr, with_exact = static_cast<bool>(options.exact);
+  SampleArrays a;
+  a.x = make_double_array("Points", 3, total_points);
+  if (with_u) a.u = make_double_array("u", 1, total_points);
+  if (with_u && with_grad) a.grad = make_double_array("grad_u", 3, total_points);
+  if (with_exact) a.exact = make_double_array("exact", 1, total_points);
+  if (with_exact && with_u) a.error = make_double_array("error", 1, total_points);
 
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfTuples(static_cast<vtkIdType>(total_cells + 1));
@@ -147,112 +168,38 @@ void write_samples(const std::string& path, const basis::Geometry& geometry, con
   connectivity->SetNumberOfTuples(static_cast<vtkIdType>(total_connectivity));
   vtkNew<vtkUnsignedCharArray> cell_types;
   cell_types->SetNumberOfTuples(static_cast<vtkIdType>(total_cells));
-  vtkNew<vtkIdTypeArray> element_array;
-  element_array->SetName("element");
-  element_array->SetNumberOfTuples(static_cast<vtkIdType>(total_cells));
-  vtkNew<vtkIntArray> kind_array;
-  kind_array->SetName("element_kind");
-  kind_array->SetNumberOfTuples(static_cast<vtkIdType>(total_cells));
+  std::vector<Index> element_of_cell;
+  element_of_cell.reserve(static_cast<std::size_t>(total_cells));
 
-  double* x_out = coords->GetPointer(0);
-  double* u_out = u_array->GetPointer(0);
-  double* grad_out = with_grad ? grad_array->GetPointer(0) : nullptr;
-  double* exact_out = with_exact ? exact_array->GetPointer(0) : nullptr;
-  double* error_out = with_exact ? error_array->GetPointer(0) : nullptr;
-  vtkIdType* offset_out = offsets->GetPointer(0);
-  vtkIdType* conn_out = connectivity->GetPointer(0);
-  unsigned char* type_out = cell_types->GetPointer(0);
-  vtkIdType* element_out = element_array->GetPointer(0);
-  int* kind_out = kind_array->GetPointer(0);
-  vtkNew<vtkIntArray> level_array;
-  level_array->SetName("level");
-  level_array->SetNumberOfTuples(static_cast<vtkIdType>(total_cells));
-  int* level_out = level_array->GetPointer(0);
-  std::vector<vtkSmartPointer<vtkDoubleArray>> extra;
-  for (const auto& [name, values] : element_data) {
-    if (values.size() != num_elements) {
-      throw InputError("vtu: element data '" + name + "' has " + std::to_string(values.size()) + " values for " +
-                       std::to_string(num_elements) + " elements");
-    }
-    auto a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(name.c_str());
-    a->SetNumberOfTuples(static_cast<vtkIdType>(total_cells));
-    extra.push_back(a);
-  }
-
-  basis::BasisValues bv;
-  basis::GeometryValues gv;
-  Eigen::VectorXd values;
-  Eigen::Matrix3Xd grads;
-  Eigen::VectorXd exact_values;
-
-  vtkIdType point_base = 0;
-  vtkIdType conn_pos = 0;
-  Index cell = 0;
-  offset_out[0] = 0;
+  vtkIdType point_base = 0, conn_pos = 0;
+  offsets->SetValue(0, 0);
   for (Index e = 0; e < num_elements; ++e) {
-    const basis::ElementKind kind = space.kind(e);
-    const SamplePattern& p = pattern_of(kind);
-    const Index q = p.num_points();
-
-    space.evaluate(e, p.points, 1, bv);
-    geometry.evaluate(e, bv, gv, /*check=*/false);
-
-    sample(e, p.points, bv, gv, values, with_grad ? &grads : nullptr);
-    if (with_exact) options.exact->values(gv.x, exact_values);
-
-    for (Index k = 0; k < q; ++k) {
-      const Index g = point_base + k;
-      for (int c = 0; c < 3; ++c) {
-        x_out[3 * g + c] = gv.x(c, k);
-        if (with_grad) grad_out[3 * g + c] = grads(c, k);
+    const SamplePattern& p = pattern_of(e);
+    sample_element(e, geometry, p, sample, options, point_base, a);
+    for (Index c = 0; c < p.num_cells(); ++c) {
+      for (int k = 0; k < p.cell_size; ++k) {
+        connectivity->SetValue(conn_pos++, point_base + p.cells[static_cast<std::size_t>(c * p.cell_size + k)]);
       }
-      u_out[g] = values(k);
-      if (with_exact) {
-        exact_out[g] = exact_values(k);
-        error_out[g] = values(k) - exact_values(k);
-      }
+      cell_types->SetValue(static_cast<vtkIdType>(element_of_cell.size()), p.vtk_type);
+      element_of_cell.push_back(e);
+      offsets->SetValue(static_cast<vtkIdType>(element_of_cell.size()), conn_pos);
     }
-
-    const Index nc = p.num_cells();
-    for (Index c = 0; c < nc; ++c) {
-      for (int a = 0; a < p.cell_size; ++a) {
-        conn_out[conn_pos++] = point_base + p.cells[static_cast<std::size_t>(c * p.cell_size + a)];
-      }
-      offset_out[cell + 1] = conn_pos;
-      type_out[cell] = p.vtk_type;
-      element_out[cell] = static_cast<vtkIdType>(e);
-      kind_out[cell] = basis::kind_code(kind);
-      level_out[cell] = space.level(e);
-      for (std::size_t k = 0; k < extra.size(); ++k) extra[k]->SetValue(cell, element_data[k].second(e));
-      ++cell;
-    }
-    point_base += static_cast<vtkIdType>(q);
+    point_base += static_cast<vtkIdType>(p.num_points());
   }
 
   vtkNew<vtkPoints> points;
-  points->SetData(coords);
+  points->SetData(a.x);
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);
-
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
   grid->SetCells(cell_types, cells);
-  grid->GetPointData()->AddArray(u_array);
-  grid->GetPointData()->SetActiveScalars("u");
-  if (with_grad) {
-    grid->GetPointData()->AddArray(grad_array);
-    grid->GetPointData()->SetActiveVectors("grad_u");
+  for (const auto& array : {a.u, a.grad, a.exact, a.error}) {
+    if (array != nullptr) grid->GetPointData()->AddArray(array);
   }
-  if (with_exact) {
-    grid->GetPointData()->AddArray(exact_array);
-    grid->GetPointData()->AddArray(error_array);
-  }
-  grid->GetCellData()->AddArray(element_array);
-  grid->GetCellData()->AddArray(kind_array);
-  grid->GetCellData()->AddArray(level_array);
-  for (const auto& a : extra) grid->GetCellData()->AddArray(a);
-
+  if (with_u) grid->GetPointData()->SetActiveScalars("u");
+  if (a.grad != nullptr) grid->GetPointData()->SetActiveVectors("grad_u");
+  add_element_cell_data(grid, space, element_of_cell, element_data);
   write_vtk_grid(path, grid);
 }
 
@@ -282,7 +229,7 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
     grads->resize(3, values.size());
     for (Index k = 0; k < values.size(); ++k) grads->col(k) = gv.tu.col(k) * du(k) + gv.tv.col(k) * dv(k);
   };
-  write_samples(path, geometry, sample, true, options, element_data);
+  write_samples(path, geometry, &sample, true, options, element_data);
 }
 
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const ElementField& field,
@@ -292,7 +239,12 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
     values.resize(ref.cols());
     field(e, ref, gv.x, values);
   };
-  write_samples(path, geometry, sample, false, options, element_data);
+  write_samples(path, geometry, &sample, false, options, element_data);
+}
+
+void write_vtu(const std::string& path, const basis::Geometry& geometry, const VtuOptions& options,
+               const ElementData& element_data) {
+  write_samples(path, geometry, nullptr, false, options, element_data);
 }
 
 void write_pvd(const std::string& path, const std::vector<SeriesEntry>& entries) {

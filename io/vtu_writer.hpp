@@ -9,6 +9,7 @@
 
 #include "basis/geometry.hpp"
 #include "fem/function.hpp"
+#include "io/element_data.hpp"
 
 namespace iga::io {
 
@@ -17,9 +18,6 @@ struct VtuOptions {
   std::shared_ptr<const fem::Function> exact;  ///< optional exact solution
 };
 
-/// Extra cell data for write_vtu: named values, one per element (e.g. "indicator", an error estimator's η_K),
-/// written on every VTK cell of the element.
-using ElementData = std::vector<std::pair<std::string, Eigen::VectorXd>>;
 
 /// One step of a series for ParaView: a .vtu file and its time (the adaptive step).
 struct SeriesEntry {
@@ -62,5 +60,8 @@ using ElementField = std::function<void(Index e, const Eigen::Matrix2Xd& ref, co
 /// The same grid as above with "u" = field (no "grad_u"), "exact"/"error" with options.exact.
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const ElementField& field,
                const VtuOptions& options = {}, const ElementData& element_data = {});
+/// The geometry alone (no solution): the same grid without "u", "grad_u" and "error" ("exact" with options.exact).
+void write_vtu(const std::string& path, const basis::Geometry& geometry, const VtuOptions& options,
+               const ElementData& element_data = {});
 
 }  // namespace iga::io

@@ -7,7 +7,7 @@
 //   cc          the regular elements (polynomial bi-3 pieces: their BB coefficients are recovered exactly by
 //               interpolation at the 4 × 4 points (i/3, j/3)); elements at extraordinary vertices are not
 //               polynomial and are skipped — counted in the JSON ("bv_skipped") and said on stderr; the .vtu
-//               samples them.
+//               writes them as interpolating Bézier cells (or samples them with --vtu-format linear).
 //   polyhedral  every patch of every configuration (paper's group names); --degree-raise writes all as bi-3.
 //   halfbox     the regular elements as cubic triangles (kind 3); elements at extraordinary faces are not
 //               polynomial and are skipped ("bv_skipped").
@@ -30,6 +30,8 @@
 #include "io/bv.hpp"
 #include "io/program.hpp"
 #include "io/report.hpp"
+#include "io/net_writer.hpp"
+#include "io/vtu_output.hpp"
 #include "io/vtu_writer.hpp"
 #include "mesh/obj_reader.hpp"
 #include "mesh/obj_writer.hpp"
@@ -40,8 +42,8 @@ using iga::Index;
 namespace {
 
 struct Options {
-  std::string basis = "polyhedral", mesh, vtu, bv, json, three_valent, obj;
-  int presubdivide = 0, degree = 3, samples = 4;
+  std::string basis = "polyhedral", mesh, vtu, bv, json, three_valent, obj, vtu_format = "bezier", net_vtu;
+  int presubdivide = 0, degree = 3, samples = 4, vtu_degree = 6;
   bool degree_raise = false, quiet = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
@@ -109,7 +111,7 @@ int run(const Options& o) {
     const double elements = static_cast<double>(net.num_faces()) * std::pow(4.0, bo.presubdivide == iga::basis::BackendOptions::kUnset ? 0 : bo.presubdivide);
     std::ostringstream what;
     what << "this geometry (about " << std::setprecision(3) << elements << " elements)";
-    iga::fem::check_memory(1000.0 * elements + (!iga::io::writes(o.vtu) ? 0.0 : iga::fem::vtu_memory(elements, o.samples)), 0.0,
+    iga::fem::check_memory(1000.0 * elements + (!iga::io::writes(o.vtu) ? 0.0 : iga::fem::vtu_memory(elements, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1)), 0.0,
                            what.str(), "each --presubdivide step needs four times more; --vtu-samples costs its square per element");
   }
   iga::basis::BackendFacts facts;
@@ -139,11 +141,20 @@ int run(const Options& o) {
   }
   if (iga::io::writes(o.vtu)) {
     if (geometry.space().num_elements() == 0) throw iga::InputError("the net produces no patch (every vertex and face touches the boundary): nothing to write to " + o.vtu);
-    iga::io::VtuOptions vo;
-    vo.samples = o.samples;
-    iga::io::write_vtu(o.vtu, geometry, Eigen::VectorXd::Zero(geometry.space().num_dofs()), vo);
+    iga::io::VtuOutput output;
+    output.format = o.vtu_format;
+    output.samples = o.samples;
+    output.degree = o.vtu_degree;
+    const std::vector<std::string> files = iga::io::write_output(o.vtu, geometry, nullptr, output);
     j["vtu"] = o.vtu;
-    log("wrote " + o.vtu);
+    j["vtu_output"] = output.settings();
+    if (files.size() > 1) j["vtu_outline"] = files[1];
+    for (const std::string& f : files) log("wrote " + f);
+  }
+  if (iga::io::writes(o.net_vtu)) {
+    iga::io::write_control_net_vtu(o.net_vtu, geometry, &net);
+    j["net_vtu"] = o.net_vtu;
+    log("wrote " + o.net_vtu);
   }
   if (iga::io::writes(o.bv)) {
     iga::io::write_bv(o.bv, patches);
@@ -170,8 +181,11 @@ int main(int argc, char** argv) {
       ->check(iga::io::whole_number(0, 6))->capture_default_str();
   app.add_option("--degree", o.degree, "bspline: degree per direction")->check(iga::io::whole_number(1, 12))->capture_default_str();
   app.add_flag("--degree-raise", o.degree_raise, "polyhedral: write every patch as bi-3 (regular bi-2 patches degree-raised)");
-  app.add_option("--vtu", o.vtu, "ParaView output of the limit surface (point data u = 0)")->check(iga::io::non_blank());
-  app.add_option("--vtu-samples", o.samples, "sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
+  app.add_option("--vtu", o.vtu, "ParaView output of the limit surface (no point data)")->check(iga::io::non_blank());
+  app.add_option("--vtu-samples", o.samples, "--vtu-format linear: sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
+  app.add_option("--vtu-format", o.vtu_format, "bezier: one exact Bezier cell per polynomial element (an interpolating one of degree --vtu-degree at extraordinary vertices), points shared, plus <base>_outline.vtu with the element edges; linear: --vtu-samples linear cells per element")->check(CLI::IsMember(iga::io::vtu_formats()))->capture_default_str();
+  app.add_option("--vtu-degree", o.vtu_degree, "--vtu-format bezier: degree of the cells of elements that are not polynomial")->check(iga::io::whole_number(1, 16))->capture_default_str();
+  app.add_option("--net", o.net_vtu, "write the control net to this .vtu: the control points, and the --mesh faces whose corners are control points as polygons")->check(iga::io::non_blank());
   app.add_option("--bv", o.bv, "BezierView output (kind-5 tensor and kind-3 triangular patches)")->check(iga::io::non_blank());
   app.add_option("--json", o.json, "JSON report: element and patch counts (polyhedral: per configuration and valence, e.g. star5)")->check(iga::io::non_blank());
   app.add_option("--three-valent", o.three_valent, "make a three-valent net from the triangle mesh --mesh: dual (a vertex per triangle) or trisect (edges split in three, corners cut); written to --obj")

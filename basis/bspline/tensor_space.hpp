@@ -2,6 +2,7 @@
 // Tensor-product B-spline space on one patch, evaluated by Bézier extraction, batched over points.
 #include <Eigen/Core>
 #include <Eigen/Sparse>
+#include <algorithm>
 #include <vector>
 
 #include "basis/bspline/knot_vector.hpp"
@@ -24,6 +25,8 @@ class TensorSpace final : public Space {
   Index num_dofs() const override { return nu_ * nv_; }
   Index num_elements() const override { return nex_ * ney_; }
   ElementKind kind(Index) const override { return {}; }
+  /// max(p_u, p_v): every element is a polynomial patch.
+  std::optional<int> polynomial_degree(Index) const override { return std::max(u_.degree(), v_.degree()); }
   std::span<const Index> dofs(Index e) const override;
   Index max_local_dofs() const override { return nloc_; }
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;

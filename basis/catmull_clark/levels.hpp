@@ -53,6 +53,9 @@ class CatmullClarkLevels final : public hierarchical::LevelHierarchy {
   void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const override;
   void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   ElementKind kind(int level, Key cell) const override { return space(level).kind(cell); }
+  std::optional<int> polynomial_degree(int level, Key cell) const override {
+    return space(level).polynomial_degree(static_cast<Index>(cell));
+  }
   int boundary_part(int level, Key cell, int side) const override;
   std::vector<std::string> boundary_part_names() const override { return level0_->boundary_part_names(); }
   Key neighbour(int level, Key cell, int side, int& their_side) const override;

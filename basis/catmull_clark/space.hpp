@@ -74,6 +74,12 @@ class CatmullClarkSpace final : public Space {
   Index num_dofs() const override { return net_.num_vertices(); }
   Index num_elements() const override { return net_.num_faces(); }
   ElementKind kind(Index e) const override { return elements_[static_cast<std::size_t>(e)].kind; }
+  /// 3 for regular faces (bicubic B-spline patches, also with extrapolated phantom points at the boundary);
+  /// std::nullopt at an extraordinary vertex.
+  std::optional<int> polynomial_degree(Index e) const override {
+    if (kind(e).family == Family::Regular) return 3;
+    return std::nullopt;
+  }
   std::span<const Index> dofs(Index e) const override;
   Index max_local_dofs() const override { return max_local_dofs_; }
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;

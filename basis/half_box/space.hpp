@@ -44,6 +44,12 @@ class HalfBoxSpace final : public Space {
   Index num_dofs() const override { return static_cast<Index>(vertex_of_dof_.size()); }
   Index num_elements() const override { return static_cast<Index>(elements_.size()); }
   ElementKind kind(Index e) const override { return elements_[static_cast<std::size_t>(e)].kind; }
+  /// 3 (total degree) for regular patches (cubic Bézier triangles, regular_patch.hpp); std::nullopt at an
+  /// extraordinary face.
+  std::optional<int> polynomial_degree(Index e) const override {
+    if (kind(e).family == Family::Regular) return 3;
+    return std::nullopt;
+  }
   std::span<const Index> dofs(Index e) const override;
   Index max_local_dofs() const override { return max_local_; }
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;

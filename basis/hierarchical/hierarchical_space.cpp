@@ -92,6 +92,11 @@ Index HierarchicalSpace::leaf_containing(int level, Key cell) const {
   return element_of(level, cell);
 }
 
+std::optional<int> HierarchicalSpace::polynomial_degree(Index e) const {
+  const Element& el = elements_[static_cast<std::size_t>(e)];
+  return hierarchy_->polynomial_degree(el.level, el.cell);
+}
+
 ElementKind HierarchicalSpace::kind(Index e) const {
   const Element& el = elements_[static_cast<std::size_t>(e)];
   return hierarchy_->kind(el.level, el.cell);

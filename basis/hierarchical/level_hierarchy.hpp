@@ -7,6 +7,7 @@
 // itself (hierarchical_space.hpp) only talks to this interface.
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,8 @@ class LevelHierarchy {
   virtual void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives,
                         BasisValues& out) const = 0;
   virtual ElementKind kind(int, Key) const { return {}; }
+  /// Space::polynomial_degree of the cell's functions (std::nullopt: infinitely piecewise or unknown).
+  virtual std::optional<int> polynomial_degree(int, Key) const { return std::nullopt; }
 
   /// Boundary: the part of side `side` of the cell (side numbering as basis::side_point on the square), or
   /// -1 when the side is interior.

@@ -41,6 +41,8 @@ class PolyhedralSpace final : public Space {
   Index num_dofs() const override { return static_cast<Index>(vertex_of_dof_.size()); }
   Index num_elements() const override { return static_cast<Index>(elements_.size()); }
   ElementKind kind(Index e) const override;
+  /// 3: every configuration (regular, star, n-gon, polar, T-junction) gives bi-3 patches (16 BB coefficients).
+  std::optional<int> polynomial_degree(Index) const override { return 3; }
   std::span<const Index> dofs(Index e) const override;
   Index max_local_dofs() const override { return max_local_; }
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;

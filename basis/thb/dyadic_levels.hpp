@@ -4,6 +4,7 @@
 // kept, new knots simple), bi-degree (p, q) on every level. Knot vectors of deep levels are never stored: knots,
 // spans and windows are computed from the coarse breakpoints, so level 20 of a 16-interval patch costs nothing
 // until a cell of it is used.
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -67,6 +68,7 @@ class DyadicBsplineLevels final : public hierarchical::LevelHierarchy {
   void child_map(int level, Key cell, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
   int local_functions(int level, Key cell, Key* out) const override;
   int max_local_functions() const override { return (u_.degree() + 1) * (v_.degree() + 1); }
+  std::optional<int> polynomial_degree(int, Key) const override { return std::max(u_.degree(), v_.degree()); }
   void support(int level, Key function, std::vector<Key>& cells) const override;
   void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const override;
   void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;

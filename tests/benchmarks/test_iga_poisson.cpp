@@ -82,15 +82,21 @@ TEST_F(IgaPoisson, DefaultRunWritesVtuAndJson) {
   reader->Update();
   vtkUnstructuredGrid* grid = reader->GetOutput();
   const long elements = j["elements"].get<long>();
-  EXPECT_EQ(grid->GetNumberOfCells(), elements * 9);  // 4×4 samples per element: 3×3 cells
-  EXPECT_EQ(grid->GetNumberOfPoints(), elements * 16);
+  // The default --vtu-format bezier: one bi-3 Bézier cell per element, control points shared (the 16 × 16 elements
+  // of degree 3 have (3 · 16 + 1)² distinct control points), the outline beside it.
+  EXPECT_EQ(grid->GetNumberOfCells(), elements);
+  EXPECT_EQ(grid->GetCellType(0), VTK_BEZIER_QUADRILATERAL);
+  EXPECT_EQ(grid->GetNumberOfPoints(), (3 * 16 + 1) * (3 * 16 + 1));
+  EXPECT_EQ(j["vtu_output"]["format"], "bezier");
+  EXPECT_EQ(j["vtu_outline"], "result_outline.vtu");
+  EXPECT_TRUE(fs::exists(dir_ / "result_outline.vtu"));
   expect_finite_array(grid->GetPointData()->GetArray("u"), 1);
   expect_finite_array(grid->GetPointData()->GetArray("exact"), 1);
   expect_finite_array(grid->GetPointData()->GetArray("error"), 1);
-  expect_finite_array(grid->GetPointData()->GetArray("grad_u"), 3);
+  EXPECT_EQ(grid->GetPointData()->GetArray("grad_u"), nullptr);  // not polynomial: only the linear format has it
   expect_finite_array(grid->GetCellData()->GetArray("element"), 1);
   expect_finite_array(grid->GetCellData()->GetArray("element_kind"), 1);
-  // The error array is u - exact at the samples: small for this converged run.
+  // The error array is u - exact (its interpolant of degree 3) on the control points: small for this run.
   double range[2];
   grid->GetPointData()->GetArray("error")->GetRange(range);
   EXPECT_LT(std::max(std::abs(range[0]), std::abs(range[1])), 1e-2);
@@ -124,7 +130,8 @@ TEST_F(IgaPoisson, CatmullClarkSquareWithThreeHoles) {
   // Holes (as made by tools/make_meshes.py): [1/6,1/3]^2, [7/12,3/4]x[1/4,5/12], [1/3,1/2]x[7/12,3/4].
   const Outcome r = run("--quiet --basis cc --mesh '" + mesh + "' --refine 1 --quadrature tiles:4:8 --source 0 "
                         "--dirichlet '2*(x < 0.4)*(y < 0.4) - (x > 0.55)*(y < 0.45)' --neumann 0 "
-                        "--neumann-where '(x > 1e-9)*(x < 1 - 1e-9)*(y > 1e-9)*(y < 1 - 1e-9)*(1 - (x < 0.4)*(y < 0.4))*(1 - (x > 0.55)*(y < 0.45))'");
+                        "--neumann-where '(x > 1e-9)*(x < 1 - 1e-9)*(y > 1e-9)*(y < 1 - 1e-9)*(1 - (x < 0.4)*(y < 0.4))*(1 - (x > 0.55)*(y < 0.45))' "
+                        "--vtu-format linear --net net.vtu");
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = report();
   EXPECT_EQ(j["basis"], "cc");
@@ -147,6 +154,13 @@ TEST_F(IgaPoisson, CatmullClarkSquareWithThreeHoles) {
   grid->GetPointData()->GetArray("u")->GetRange(range);
   EXPECT_GT(range[0], -1.2);
   EXPECT_LT(range[1], 2.2);
+  // --net: every control point of the refined geometry (the solution's dofs) as a point.
+  EXPECT_EQ(j["net_vtu"], "net.vtu");
+  auto net_reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  net_reader->SetFileName((dir_ / "net.vtu").c_str());
+  net_reader->Update();
+  EXPECT_EQ(net_reader->GetOutput()->GetNumberOfPoints(), j["dofs"].get<long>());
+  EXPECT_GE(net_reader->GetOutput()->GetNumberOfCells(), j["dofs"].get<long>());
 }
 
 // Half-box splines on the dual of a triangulation (a net the program reads; pentagons and heptagons inside):
@@ -155,7 +169,7 @@ TEST_F(IgaPoisson, CatmullClarkSquareWithThreeHoles) {
 TEST_F(IgaPoisson, HalfBoxOnTheDualOfATriangulation) {
   iga::mesh::write_obj(iga::mesh::dual_net(iga::mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/tri_square.obj")),
                        (dir_ / "net.obj").string());
-  const Outcome r = run("--quiet --basis halfbox --mesh net.obj --refine 1 --problem linear --quadrature tiles:4:16");
+  const Outcome r = run("--quiet --basis halfbox --mesh net.obj --refine 1 --problem linear --quadrature tiles:4:16 --vtu-format linear");
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = report();
   EXPECT_EQ(j["basis"], "halfbox");
@@ -295,7 +309,7 @@ TEST_F(IgaPoisson, AdaptiveWritesASeriesAndTheHistory) {
     reader->SetFileName((dir_ / expected).c_str());
     reader->Update();
     vtkUnstructuredGrid* grid = reader->GetOutput();
-    EXPECT_EQ(grid->GetNumberOfCells(), a["history"][k]["elements"].get<long>() * 9);
+    EXPECT_EQ(grid->GetNumberOfCells(), a["history"][k]["elements"].get<long>());  // one Bézier cell per element
     vtkDataArray* level = grid->GetCellData()->GetArray("level");
     expect_finite_array(grid->GetCellData()->GetArray("indicator"), 1);
     ASSERT_NE(level, nullptr);

@@ -3,6 +3,7 @@
 // points), the .vtu read back with VTK, and one clear error line with a non-zero exit on bad input.
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
@@ -105,7 +106,7 @@ bool contains_point(const std::vector<Eigen::RowVector3d>& pts, const Eigen::Row
 
 TEST_F(IgaGeometry, PolyhedralRegularGrid) {
   write("grid.obj", grid_obj(5));
-  const Outcome r = run("--basis polyhedral --mesh grid.obj --bv out.bv --vtu out.vtu --vtu-samples 5 --json out.json");
+  const Outcome r = run("--basis polyhedral --mesh grid.obj --bv out.bv --vtu out.vtu --vtu-format linear --vtu-samples 5 --json out.json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = report("out.json");
   // 9 interior vertices, each a regular configuration with one bi-2 patch (paper Section 3 (1)).
@@ -139,6 +140,7 @@ TEST_F(IgaGeometry, PolyhedralRegularGrid) {
   reader->Update();
   ASSERT_NE(reader->GetOutput(), nullptr);
   EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 9 * 16);
+  EXPECT_EQ(reader->GetOutput()->GetPointData()->GetArray("u"), nullptr);  // the geometry alone: no field
 
   // --degree-raise: the same patches as bi-3; corners (interpolated) unchanged.
   ASSERT_EQ(run("--mesh grid.obj --bv raised.bv --degree-raise --quiet").code, 0);
@@ -177,9 +179,19 @@ TEST_F(IgaGeometry, BsplineByBezierExtraction) {
 
 TEST_F(IgaGeometry, CatmullClarkRegularElementsAndSkippedOnes) {
   write("grid.obj", grid_obj(7));
-  ASSERT_EQ(run("--basis cc --mesh grid.obj --bv out.bv --json out.json --vtu out.vtu").code, 0);
+  ASSERT_EQ(run("--basis cc --mesh grid.obj --bv out.bv --json out.json --vtu out.vtu --net net.vtu").code, 0);
   const auto j = report("out.json");
   EXPECT_EQ(j["elements"], 36);
+  // --net: the 7 × 7 control points (the net's vertices, no global step needed) and the 36 faces as polygons.
+  EXPECT_EQ(j["net_vtu"], "net.vtu");
+  auto net_reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  net_reader->SetFileName((dir_ / "net.vtu").string().c_str());
+  net_reader->Update();
+  EXPECT_EQ(net_reader->GetOutput()->GetNumberOfPoints(), 49);
+  EXPECT_EQ(net_reader->GetOutput()->GetNumberOfCells(), 49 + 36);
+  // The default --vtu-format bezier: one bi-3 cell per element, the outline beside it, no u.
+  EXPECT_EQ(j["vtu_output"]["format"], "bezier");
+  EXPECT_TRUE(fs::exists(dir_ / "out_outline.vtu"));
   EXPECT_EQ(j["bv_patches"].get<int>() + j["bv_skipped"].get<int>(), 36);
   const auto patches = iga::io::read_bv((dir_ / "out.bv").string());
   ASSERT_EQ(static_cast<int>(patches.size()), j["bv_patches"].get<int>());

@@ -1,0 +1,32 @@
+#pragma once
+// Pieces shared by the .vtu writers of a Space (vtu_writer.cpp: sampled linear cells; bezier_writer.cpp: Bézier
+// cells): named double arrays and the per-cell data that says which element a VTK cell belongs to. Internal to
+// io/ (it names VTK types, which io/ links privately).
+#include <Eigen/Core>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+#include <vtkDoubleArray.h>
+#include <vtkSmartPointer.h>
+
+#include "basis/space.hpp"
+#include "io/element_data.hpp"
+
+class vtkUnstructuredGrid;
+
+namespace iga::io {
+
+/// A double array of `tuples` tuples with `components` components.
+vtkSmartPointer<vtkDoubleArray> make_double_array(const char* name, int components, Index tuples);
+
+/// InputError naming the entry when an entry of element_data does not have one value per element.
+void check_element_data(const basis::Space& space, const ElementData& element_data);
+
+/// Adds the cell data of cells that belong to elements element_of_cell[c]: "element" (vtkIdTypeArray, the element
+/// index), "element_kind" (vtkIntArray, basis::kind_code of its kind), "level" (vtkIntArray, Space::level) and each
+/// entry of element_data (vtkDoubleArray; checked as check_element_data).
+void add_element_cell_data(vtkUnstructuredGrid* grid, const basis::Space& space, std::span<const Index> element_of_cell,
+                           const ElementData& element_data);
+
+}  // namespace iga::io

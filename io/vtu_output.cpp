@@ -1,0 +1,36 @@
+#include "io/vtu_output.hpp"
+
+#include "core/error.hpp"
+#include "io/bezier_writer.hpp"
+
+namespace iga::io {
+
+nlohmann::json VtuOutput::settings() const {
+  if (format == "linear") return {{"format", format}, {"samples", samples}};
+  return {{"format", format}, {"degree", degree}};
+}
+
+std::vector<std::string> vtu_formats() { return {"bezier", "linear"}; }
+
+std::vector<std::string> write_output(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd* u,
+                                      const VtuOutput& output, const ElementData& element_data) {
+  if (output.format == "bezier") {
+    BezierOptions bo;
+    bo.degree = output.degree;
+    bo.exact = output.exact;
+    write_bezier(path, geometry, u, bo, element_data);
+    return {path, outline_path(path)};
+  }
+  if (output.format != "linear") throw InputError("--vtu-format: '" + output.format + "' is not bezier or linear");
+  VtuOptions vo;
+  vo.samples = output.samples;
+  vo.exact = output.exact;
+  if (u != nullptr) {
+    write_vtu(path, geometry, *u, vo, element_data);
+  } else {
+    write_vtu(path, geometry, vo, element_data);
+  }
+  return {path};
+}
+
+}  // namespace iga::io
