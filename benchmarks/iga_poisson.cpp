@@ -14,6 +14,7 @@
 #include "basis/registry.hpp"
 #include "benchmarks/study.hpp"
 #include "core/error.hpp"
+#include "fem/convergence.hpp"
 #include "fem/expression.hpp"
 #include "fem/memory.hpp"
 #include "fem/poisson.hpp"
@@ -195,6 +196,32 @@ std::unique_ptr<iga::quadrature::RuleProvider> make_rules(const Options& o, cons
   return rules;
 }
 
+// The adaptive loop's convergence over its steps (fem::ConvergenceTable with h = N^(-1/2), N the dofs): per step the
+// rate of the estimate and, with an exact solution, of the energy error, and the least-squares rate over all steps;
+// optimal for degree p is p (e ~ N^(-p/2)). The table goes to the log.
+nlohmann::json adaptive_rates(const std::vector<iga::refine::AdaptiveStep>& history, const Log& log) {
+  using iga::fem::ConvergenceTable;
+  const bool energy = std::all_of(history.begin(), history.end(), [](const auto& st) { return st.energy_error.has_value(); });
+  ConvergenceTable table(energy ? std::vector<std::string>{"estimate", "energy"} : std::vector<std::string>{"estimate"});
+  for (const iga::refine::AdaptiveStep& st : history) {
+    std::vector<double> errors{st.estimate};
+    if (energy) errors.push_back(*st.energy_error);
+    table.add_row({st.step, st.dofs, st.elements, 1.0 / std::sqrt(static_cast<double>(st.dofs)), errors,
+                   st.setup_seconds + st.assembly_seconds + st.solve_seconds + st.estimate_seconds + st.refine_seconds});
+  }
+  nlohmann::json j = {{"against", "N^(-1/2), N = dofs: e ~ N^(-r/2), optimal r = degree"}};
+  for (std::size_t n = 0; n < table.norms().size(); ++n) {
+    nlohmann::json rates = nlohmann::json::array();
+    for (const auto& r : table.rates(n)) rates.push_back(r ? nlohmann::json(*r) : nlohmann::json(nullptr));
+    const std::string key = table.norms()[n] == "energy" ? "energy_error" : "estimate";
+    j["rates"][key] = rates;
+    const auto fitted = table.fitted_rate(n);
+    j["fitted_rates"][key] = fitted ? nlohmann::json(*fitted) : nlohmann::json(nullptr);
+  }
+  log("adaptive convergence over the steps (h = N^(-1/2), N = dofs):\n" + table.text());
+  return j;
+}
+
 // --adaptive: solve → estimate → mark → refine, one .vtu per step and a .pvd series; r is the last step's result.
 // Returns the report's "adaptive" object.
 nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis::Geometry& geometry,
@@ -243,6 +270,7 @@ nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis
                       {"errors", st.error_seconds}, {"estimate", st.estimate_seconds}, {"mark", st.mark_seconds},
                       {"refine", st.refine_seconds}}}});
   }
+  adaptive_json["convergence"] = adaptive_rates(history, log);
   return adaptive_json;
 }
 

@@ -12,9 +12,6 @@
 #ifndef IGA_SHARE_FROM_BIN
 #define IGA_SHARE_FROM_BIN "../share/iga"
 #endif
-#ifndef IGA_BUILD_SHARE_DIR
-#define IGA_BUILD_SHARE_DIR ""
-#endif
 
 extern char** environ;
 
@@ -28,7 +25,6 @@ std::string find_share_file(const std::string& name, std::vector<std::string>& l
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) candidates.push_back(exe.parent_path() / IGA_SHARE_FROM_BIN / name);
-  if (std::strlen(IGA_BUILD_SHARE_DIR) > 0) candidates.push_back(fs::path(IGA_BUILD_SHARE_DIR) / name);
   for (const fs::path& p : candidates) {
     const fs::path normal = p.lexically_normal();
     looked.push_back(normal.string());

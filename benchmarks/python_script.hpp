@@ -9,8 +9,8 @@ namespace iga::bench {
 /// The path of the data file `name` installed with the project, the first that exists of
 ///  1. $IGA_SHARE_DIR/name (an override),
 ///  2. <folder of /proc/self/exe>/IGA_SHARE_FROM_BIN/name (installed: bin/../share/iga; build tree:
-///     build/benchmarks/../share/iga, where CMake copies the scripts),
-///  3. the build tree's copy, IGA_BUILD_SHARE_DIR/name (an executable moved out of its tree).
+///     build/benchmarks/../share/iga, where CMake copies the scripts).
+/// No path of the build or source tree is compiled in (the installed program is relocatable).
 /// "" when none exists; `looked` lists the paths tried, in order.
 std::string find_share_file(const std::string& name, std::vector<std::string>& looked);
 
