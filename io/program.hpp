@@ -75,8 +75,8 @@ inline std::string export_config_text(const CLI::App& app, const std::string& pr
   for (const CLI::Option* opt : app.get_options()) {
     const std::string name = detail::setting_name(opt);
     if (name.empty() || opt->count() > 0) continue;
-    const std::string d = opt->get_default_str();
-    defaults += "# " + name + " = " + (d.empty() ? "(not set)" : d) + "\n";
+    const std::string d = opt->get_expected_min() == 0 ? "false" : opt->get_default_str();
+    defaults += "# " + name + " = " + (d.empty() ? "(not set: the program's default)" : d) + "\n";
   }
   if (!defaults.empty()) text += "# left at their defaults:\n" + defaults;
   return text;
