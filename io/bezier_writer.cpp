@@ -217,21 +217,6 @@ vtkNew<vtkUnstructuredGrid> grid_with_points(const BezierMesh& mesh) {
   return grid;
 }
 
-/// Cells given as offsets/connectivity/types.
-void set_cells(vtkUnstructuredGrid* grid, const std::vector<Index>& offsets, const std::vector<Index>& connectivity,
-               const std::vector<unsigned char>& types) {
-  vtkNew<vtkIdTypeArray> off, conn;
-  off->SetNumberOfTuples(static_cast<vtkIdType>(offsets.size()));
-  std::copy(offsets.begin(), offsets.end(), off->GetPointer(0));
-  conn->SetNumberOfTuples(static_cast<vtkIdType>(connectivity.size()));
-  std::copy(connectivity.begin(), connectivity.end(), conn->GetPointer(0));
-  vtkNew<vtkUnsignedCharArray> type_array;
-  type_array->SetNumberOfTuples(static_cast<vtkIdType>(types.size()));
-  std::copy(types.begin(), types.end(), type_array->GetPointer(0));
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(off, conn);
-  grid->SetCells(type_array, cells);
-}
 
 }  // namespace
 

@@ -93,21 +93,11 @@ void write_control_net_vtu(const std::string& path, const basis::Geometry& geome
   vtkNew<vtkPoints> points;
   points->SetData(coords);
   grid->SetPoints(points);
-  vtkNew<vtkIdTypeArray> off, conn, face_array;
-  const auto fill = [](vtkIdTypeArray* a, const std::vector<vtkIdType>& v) {
-    a->SetNumberOfTuples(static_cast<vtkIdType>(v.size()));
-    std::copy(v.begin(), v.end(), a->GetPointer(0));
-  };
-  fill(off, offsets);
-  fill(conn, connectivity);
-  fill(face_array, face);
+  set_cells(grid, offsets, connectivity, types);
+  vtkNew<vtkIdTypeArray> face_array;
+  face_array->SetNumberOfTuples(static_cast<vtkIdType>(face.size()));
+  std::copy(face.begin(), face.end(), face_array->GetPointer(0));
   face_array->SetName("net_face");
-  vtkNew<vtkUnsignedCharArray> type_array;
-  type_array->SetNumberOfTuples(static_cast<vtkIdType>(types.size()));
-  std::copy(types.begin(), types.end(), type_array->GetPointer(0));
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(off, conn);
-  grid->SetCells(type_array, cells);
   grid->GetPointData()->AddArray(dof);
   grid->GetCellData()->AddArray(face_array);
   write_vtk_grid(path, grid);
