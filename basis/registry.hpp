@@ -26,6 +26,7 @@ struct BackendOptions {
   bool degree_raise = false;  ///< Bézier export: raise every patch to the element degree ("degree-raise")
   std::string geometry;       ///< a built-in geometry instead of a net ("geometry": bspline quarter-annulus, l-shape)
   std::string net_name = "mesh";  ///< the net's file name, for messages
+  std::string cc_boundary;        ///< "cc-boundary": cc, natural (default when empty) or clamped
 };
 
 /// Facts about a build or refinement that a program reports: counts for the JSON report under '/'-separated

@@ -100,9 +100,13 @@ PerTile::PerTile(int points_per_direction, int levels)
   halves.weights << 0.5 * line.weights, 0.5 * line.weights;
   half_box_sides_ = {dyadic_line_rule(points_per_direction, levels, true), halves,
                      dyadic_line_rule(points_per_direction, levels, false)};
+  // A Catmull–Clark quad with its EV at corner c0: side 0 (c0 -> c1) and side 3 (c3 -> c0) run along the tiles
+  // into the EV; sides 1 and 2 cross the two tiles of layer 1 at t = 1/2.
+  quad_sides_ = {half_box_sides_[0], halves, halves, half_box_sides_[2]};
 }
 
 const Rule1D& PerTile::side_rule(const basis::ElementKind& kind, int side) const {
+  if (is_catmull_clark_irregular(kind) && side >= 0 && side < 4) return quad_sides_[static_cast<std::size_t>(side)];
   if (kind.shape == basis::Shape::Triangle && kind.family == basis::Family::Irregular &&
       kind.scheme == basis::Scheme::HalfBox && side >= 0 && side < 3) {
     return half_box_sides_[static_cast<std::size_t>(side)];

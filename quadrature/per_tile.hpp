@@ -32,9 +32,11 @@ Rule1D dyadic_line_rule(int p, int levels, bool toward_zero);
 
 /// PerTile(p, levels): the tiled rule on irregular Catmull–Clark quads, the tiled triangle rule on irregular
 /// half-box triangles, p × p Gauss on polynomial quads, the collapsed rule on polynomial triangles, p points
-/// on sides; UnsupportedError naming any other irregular kind. Sides of irregular half-box triangles follow
-/// their tiles: side 0 (from the EF corner) and side 2 (into it) by dyadic_line_rule, side 1 by p points on
-/// each half. Name "tiles:P:L".
+/// on sides; UnsupportedError naming any other irregular kind. Sides of irregular elements follow their tiles
+/// (a side of a Catmull–Clark EV element on the boundary carries a non-polynomial trace with the clamped
+/// boundary rule): half-box triangles side 0 (from the EF corner) and side 2 (into it), Catmull–Clark quads
+/// side 0 (from the EV) and side 3 (into it) by dyadic_line_rule; the other sides by p points on each half.
+/// Name "tiles:P:L".
 class PerTile final : public RuleProvider {
  public:
   PerTile(int points_per_direction, int levels);
@@ -49,6 +51,7 @@ class PerTile final : public RuleProvider {
   int levels_;
   Rule tiled_, tiled_triangle_;
   std::array<Rule1D, 3> half_box_sides_;
+  std::array<Rule1D, 4> quad_sides_;
 };
 
 }  // namespace iga::quadrature

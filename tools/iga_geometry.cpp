@@ -44,6 +44,7 @@ namespace {
 struct Options {
   std::string basis = "polyhedral", mesh, vtu, bv, json, three_valent, obj, vtu_format = "bezier", net_vtu;
   int presubdivide = 0, degree = 3, samples = 4, vtu_degree = 6;
+  std::string cc_boundary = "natural";
   bool degree_raise = false, quiet = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
@@ -105,6 +106,7 @@ int run(const Options& o) {
   if (std::find(o.given.begin(), o.given.end(), "degree") != o.given.end()) bo.degree = o.degree;
   if (std::find(o.given.begin(), o.given.end(), "presubdivide") != o.given.end()) bo.presubdivide = o.presubdivide;
   bo.degree_raise = o.degree_raise;
+  if (std::find(o.given.begin(), o.given.end(), "cc-boundary") != o.given.end()) bo.cc_boundary = o.cc_boundary;
   const iga::mesh::PolyMesh net = iga::mesh::read_obj(o.mesh);
   {
     // Size before work: --presubdivide multiplies the faces by four per step; the .vtu samples² points each.
@@ -177,6 +179,7 @@ int main(int argc, char** argv) {
   for (const auto& b : iga::basis::backends()) backend_list.push_back(b.name);
   app.add_option("--basis", o.basis, "basis backend (" + iga::basis::backend_names() + ")")->check(CLI::IsMember(backend_list))->capture_default_str();
   app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline)")->required()->check(iga::io::input_file());
+  app.add_option("--cc-boundary", o.cc_boundary, "cc: natural (OpenSubdiv's boundary rule) or clamped (one ring of ghost control points, drawn with --net)")->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
   app.add_option("--presubdivide", o.presubdivide, "Catmull-Clark steps applied to the net first (one makes any net with valences <= 8 admissible for polyhedral)")
       ->check(iga::io::whole_number(0, 6))->capture_default_str();
   app.add_option("--degree", o.degree, "bspline: degree per direction")->check(iga::io::whole_number(1, 12))->capture_default_str();
@@ -196,7 +199,7 @@ int main(int argc, char** argv) {
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
-  for (const char* option : {"degree", "presubdivide", "degree-raise"}) {
+  for (const char* option : {"degree", "presubdivide", "degree-raise", "cc-boundary"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
   return iga::io::run_program("iga-geometry", [&] { return run(o); });

@@ -24,7 +24,8 @@ const CatmullClarkSpace& cc_of(const Geometry& g) {
 }
 
 Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFacts& facts) {
-  Geometry g = catmull_clark::make_catmull_clark_geometry(net, o.net_name);
+  const auto rule = o.cc_boundary.empty() ? catmull_clark::BoundaryRule::kNatural : catmull_clark::boundary_rule(o.cc_boundary);
+  Geometry g = catmull_clark::make_catmull_clark_geometry(net, o.net_name, rule);
   const int steps = cc_of(g).refinement_steps();
   facts.counts["cc_global_steps"] = steps;
   if (steps > 0) {
@@ -60,11 +61,10 @@ Refinement refine_net(const Geometry& geometry, int steps, BackendFacts& facts) 
   if (std::dynamic_pointer_cast<const HierarchicalSpace>(geometry.space_ptr())) {
     return hierarchical::refine_all_geometry(geometry, steps, facts);
   }
-  catmull_clark::NetRefinement net = catmull_clark::refine_net(cc_of(geometry).control_mesh(), steps);
-  auto fine = std::make_shared<const CatmullClarkSpace>(net.mesh, "refined net");
-  if (fine->refinement_steps() != 0) throw NumericalError("refined Catmull–Clark net needed another global step");
-  Eigen::MatrixXd cp = net.prolongation * geometry.control_points();
-  return {Geometry(fine, std::move(cp)), std::move(net.prolongation), true};
+  catmull_clark::SpaceRefinement r = catmull_clark::refine_space(cc_of(geometry), steps);
+  if (r.space->refinement_steps() != 0) throw NumericalError("refined Catmull–Clark net needed another global step");
+  Eigen::MatrixXd cp = r.prolongation * geometry.control_points();
+  return {Geometry(std::move(r.space), std::move(cp)), std::move(r.prolongation), true};
 }
 
 // The regular elements are bi-3 polynomials: their BB coefficients are recovered exactly by interpolation at
@@ -104,6 +104,7 @@ Backend catmull_clark_backend() {
   b.description = "Catmull–Clark subdivision splines on any control net (exact evaluation at extraordinary vertices)";
   b.default_degree = 3;
   b.default_refine = 1;
+  b.options = {"cc-boundary"};
   b.from_net = from_net;
   b.refine = refine_net;
   b.refine_marked = refine_hierarchical;

@@ -88,12 +88,12 @@ int CatmullClarkLevels::built_levels() const {
 
 std::unique_ptr<CatmullClarkLevels::Level> CatmullClarkLevels::make_level(const Level& coarse) const {
   const CatmullClarkSpace& cs = *coarse.space;
-  NetRefinement r = refine_net(cs.control_mesh(), 1);
-  if (r.mesh.num_faces() != 4 * cs.num_elements()) {
+  SpaceRefinement r = refine_space(cs, 1);
+  if (r.space->num_elements() != 4 * cs.num_elements()) {
     throw std::logic_error("Catmull–Clark levels: a refined all-quad net does not have 4 faces per face");
   }
   auto out = std::make_unique<Level>();
-  out->space = std::make_shared<const CatmullClarkSpace>(r.mesh, "refined net");
+  out->space = std::move(r.space);
   if (out->space->refinement_steps() != 0) throw NumericalError("Catmull–Clark levels: a refined net needed a global step");
   out->subdivision = r.prolongation;
   const CatmullClarkSpace& fs = *out->space;
@@ -192,7 +192,7 @@ Key CatmullClarkLevels::neighbour(int l, Key cell, int side, int& their_side) co
   const mesh::PolyMesh& net = s.control_mesh();
   const Index h = net.face_half_edge(cell) + (side + s.rotation(cell)) % 4;
   const Index t = net.half_edge(h).twin;
-  if (t < 0) {
+  if (t < 0 || net.half_edge(t).face >= s.num_elements()) {  // the boundary (or a ghost face beyond it)
     their_side = -1;
     return -1;
   }

@@ -5,6 +5,7 @@ set(IGA_CATMULL_CLARK_SOURCES
   catmull_clark/regular_patch.cpp
   catmull_clark/irregular_patch.cpp
   catmull_clark/topology.cpp
+  catmull_clark/ghost_net.cpp
   catmull_clark/space.cpp
   catmull_clark/levels.cpp
   catmull_clark/subdivision_matrix.cpp

@@ -23,7 +23,10 @@ int ev_valence(const mesh::PolyMesh& m, Index v) {
   return m.is_boundary_vertex(v) ? m.num_vertex_faces(v) + 1 : m.valence(v);
 }
 
-void validate(const mesh::PolyMesh& m, const std::string& name) {
+// Boundary vertices with more faces than this are refused (clamped: k faces become interior valence k + 2).
+int max_boundary_faces(BoundaryRule rule) { return rule == BoundaryRule::kClamped ? 14 : 15; }
+
+void validate(const mesh::PolyMesh& m, const std::string& name, BoundaryRule rule) {
   check_no_isolated_vertices(m, name);
   for (Index v = 0; v < m.num_vertices(); ++v) {
     if (!m.is_boundary_vertex(v)) {
@@ -35,9 +38,11 @@ void validate(const mesh::PolyMesh& m, const std::string& name) {
         throw InputError(name, m.vertex_line(v), "interior vertex " + std::to_string(v + 1) + " has valence " +
                          std::to_string(m.valence(v)) + " (at most 16 supported)");
       }
-    } else if (m.num_vertex_faces(v) > 15) {
+    } else if (m.num_vertex_faces(v) > max_boundary_faces(rule)) {
       throw InputError(name, m.vertex_line(v), "boundary vertex " + std::to_string(v + 1) + " has " +
-                       std::to_string(m.num_vertex_faces(v)) + " faces (at most 15 supported)");
+                       std::to_string(m.num_vertex_faces(v)) + " faces (at most " +
+                       std::to_string(max_boundary_faces(rule)) + " supported" +
+                       (rule == BoundaryRule::kClamped ? " with the clamped boundary" : "") + ")");
     }
   }
 }
@@ -67,8 +72,9 @@ std::vector<int> stam_points(const QuadMesh& m) {
   return idx;
 }
 
-bool needs_global_step(const mesh::PolyMesh& m) {
-  for (Index f = 0; f < m.num_faces(); ++f) {
+// Whether some face of [0, faces) is not a quad or touches more than one EV.
+bool needs_global_step(const mesh::PolyMesh& m, Index faces) {
+  for (Index f = 0; f < faces; ++f) {
     if (m.face_size(f) != 4) return true;
     int evs = 0;
     for (Index v : m.face(f)) evs += is_extraordinary(m, v) ? 1 : 0;
@@ -79,9 +85,21 @@ bool needs_global_step(const mesh::PolyMesh& m) {
 
 }  // namespace
 
-CatmullClarkSpace::CatmullClarkSpace(const mesh::PolyMesh& mesh, const std::string& name, IrregularMethod method) {
-  validate(mesh, name);
-  if (needs_global_step(mesh)) {
+BoundaryRule boundary_rule(const std::string& word) {
+  if (word == "natural") return BoundaryRule::kNatural;
+  if (word == "clamped") return BoundaryRule::kClamped;
+  throw InputError("Catmull–Clark boundary rule '" + word + "': unknown (known: natural, clamped)");
+}
+
+std::string to_string(BoundaryRule rule) { return rule == BoundaryRule::kClamped ? "clamped" : "natural"; }
+
+CatmullClarkSpace::CatmullClarkSpace(const mesh::PolyMesh& mesh, const std::string& name, IrregularMethod method,
+                                     BoundaryRule boundary)
+    : boundary_(boundary) {
+  validate(mesh, name, boundary);
+  const bool clamped = boundary == BoundaryRule::kClamped;
+  ExtendedNet ext = clamped ? extend_net(mesh, name) : ExtendedNet{mesh, mesh.num_faces()};
+  if (needs_global_step(ext.mesh, ext.domain_faces)) {
     for (Index f = 0; f < mesh.num_faces(); ++f) {
       if (mesh.face_size(f) > 16) {
         throw InputError(name, mesh.face_line(f), "face " + std::to_string(f + 1) + " has " + std::to_string(mesh.face_size(f)) +
@@ -91,20 +109,45 @@ CatmullClarkSpace::CatmullClarkSpace(const mesh::PolyMesh& mesh, const std::stri
   }
   // One step makes every face a quad and separates EVs that share an edge or a quad; a face that was not a
   // quad and had an EV corner gives a child with two EVs (its face point and the vertex): a second step.
-  net_ = mesh;
-  while (needs_global_step(net_)) {
+  while (needs_global_step(ext.mesh, ext.domain_faces)) {
     if (steps_ == 2) throw std::logic_error("catmull_clark: EVs not separated after two steps");
-    net_ = refine_net(net_, 1).mesh;
+    if (clamped) {
+      ext = refine_extended(ext, 1).net;
+    } else {
+      ext.mesh = refine_net(ext.mesh, 1).mesh;
+      ext.domain_faces = ext.mesh.num_faces();
+    }
     ++steps_;
   }
-  build_elements(name, method);
+  net_ = std::move(ext.mesh);
+  build(name, method, ext.domain_faces);
+}
+
+CatmullClarkSpace::CatmullClarkSpace(ExtendedNet net, const std::string& name) : boundary_(BoundaryRule::kClamped) {
+  if (needs_global_step(net.mesh, net.domain_faces)) {
+    throw std::logic_error("catmull_clark: an extended net given to the space needs a global step");
+  }
+  net_ = std::move(net.mesh);
+  build(name, IrregularMethod::kStam, net.domain_faces);
+}
+
+void CatmullClarkSpace::build(const std::string& name, IrregularMethod method, Index domain_faces) {
+  if (boundary_ == BoundaryRule::kClamped) {
+    std::vector<std::vector<Index>> faces;
+    for (Index f = 0; f < domain_faces; ++f) {
+      const auto fv = net_.face(f);
+      faces.emplace_back(fv.begin(), fv.end());
+    }
+    domain_ = mesh::PolyMesh::build(net_.points(), std::move(faces));
+  }
+  build_elements(name, method, domain_faces);
   build_boundary();
 }
 
-void CatmullClarkSpace::build_elements(const std::string& name, IrregularMethod method) {
+void CatmullClarkSpace::build_elements(const std::string& name, IrregularMethod method, Index domain_faces) {
   const QuadMesh qm = quad_mesh_from(net_);
-  elements_.resize(static_cast<std::size_t>(net_.num_faces()));
-  for (Index f = 0; f < net_.num_faces(); ++f) {
+  elements_.resize(static_cast<std::size_t>(domain_faces));
+  for (Index f = 0; f < domain_faces; ++f) {
     Element& el = elements_[static_cast<std::size_t>(f)];
     const auto fv = net_.face(f);
     for (int i = 0; i < 4; ++i) {
@@ -149,14 +192,15 @@ void CatmullClarkSpace::build_elements(const std::string& name, IrregularMethod 
 }
 
 void CatmullClarkSpace::build_boundary() {
-  const auto& loops = net_.boundary_loops();
+  const mesh::PolyMesh& dm = domain_mesh();
+  const auto& loops = dm.boundary_loops();
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const auto& loop = loops[l];
     const std::size_t n = loop.size();
     std::size_t start = 0;
     bool has_corner = false;
     for (std::size_t k = 0; k < n; ++k) {
-      if (net_.num_vertex_faces(net_.half_edge(loop[k]).origin) == 1) {
+      if (dm.num_vertex_faces(dm.half_edge(loop[k]).origin) == 1) {
         start = k;
         has_corner = true;
         break;
@@ -165,8 +209,8 @@ void CatmullClarkSpace::build_boundary() {
     int segment = -1;
     for (std::size_t k = 0; k < n; ++k) {
       const Index h = loop[(start + k) % n];
-      const Index v = net_.half_edge(h).origin;
-      if (segment < 0 || (has_corner && net_.num_vertex_faces(v) == 1)) {
+      const Index v = dm.half_edge(h).origin;
+      if (segment < 0 || (has_corner && dm.num_vertex_faces(v) == 1)) {
         ++segment;
         std::string part = "b";
         part += std::to_string(l);
@@ -174,8 +218,8 @@ void CatmullClarkSpace::build_boundary() {
         part += std::to_string(segment);
         part_names_.push_back(std::move(part));
       }
-      const Index f = net_.half_edge(h).face;
-      const int j = static_cast<int>(h - net_.face_half_edge(f));
+      const Index f = dm.half_edge(h).face;
+      const int j = static_cast<int>(h - dm.face_half_edge(f));
       const int side = (j - elements_[static_cast<std::size_t>(f)].rotation + 4) % 4;
       boundary_edges_.push_back({f, side, static_cast<int>(part_names_.size()) - 1});
     }
@@ -184,8 +228,9 @@ void CatmullClarkSpace::build_boundary() {
 
 std::vector<InteriorEdge> CatmullClarkSpace::interior_edges() const {
   // Side of the rotated element f that half-edge h (of face f) is, as in build_boundary().
+  const mesh::PolyMesh& dm = domain_mesh();
   auto side_of = [&](Index h, Index f) {
-    const int j = static_cast<int>(h - net_.face_half_edge(f));
+    const int j = static_cast<int>(h - dm.face_half_edge(f));
     return (j - elements_[static_cast<std::size_t>(f)].rotation + 4) % 4;
   };
   // An element's EV is its corner c0, on its sides 0 (c0 → c1) and 3 (c3 → c0).
@@ -193,11 +238,11 @@ std::vector<InteriorEdge> CatmullClarkSpace::interior_edges() const {
     return elements_[static_cast<std::size_t>(f)].kind.family == Family::Irregular && (side == 0 || side == 3);
   };
   std::vector<InteriorEdge> edges;
-  edges.reserve(static_cast<std::size_t>(net_.num_half_edges() / 2));
-  for (Index h = 0; h < net_.num_half_edges(); ++h) {
-    const mesh::HalfEdge& he = net_.half_edge(h);
+  edges.reserve(static_cast<std::size_t>(dm.num_half_edges() / 2));
+  for (Index h = 0; h < dm.num_half_edges(); ++h) {
+    const mesh::HalfEdge& he = dm.half_edge(h);
     if (he.twin < h) continue;  // a boundary edge (twin -1) or listed from its twin
-    const Index f0 = he.face, f1 = net_.half_edge(he.twin).face;
+    const Index f0 = he.face, f1 = dm.half_edge(he.twin).face;
     const int s0 = side_of(h, f0), s1 = side_of(he.twin, f1);
     const int continuity = at_ev(f0, s0) || at_ev(f1, s1) ? 1 : 2;
     edges.push_back({{f0, f1}, {s0, s1}, {0.0, 1.0}, {1.0, 0.0}, continuity});
@@ -232,8 +277,8 @@ void CatmullClarkSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int deriv
   }
 }
 
-Geometry make_catmull_clark_geometry(const mesh::PolyMesh& mesh, const std::string& name) {
-  auto space = std::make_shared<const CatmullClarkSpace>(mesh, name);
+Geometry make_catmull_clark_geometry(const mesh::PolyMesh& mesh, const std::string& name, BoundaryRule boundary) {
+  auto space = std::make_shared<const CatmullClarkSpace>(mesh, name, IrregularMethod::kStam, boundary);
   const mesh::PolyMesh& net = space->control_mesh();
   const int dim = net.is_planar() ? 2 : 3;
   Eigen::MatrixXd cp(net.num_vertices(), dim);
@@ -248,6 +293,16 @@ std::optional<SubdivisionElement> CatmullClarkSpace::subdivision_element(Index e
   SubdivisionElement s{&el.irregular->config->view, el.irregular->level1, 1, {}};
   for (const auto& t : el.irregular->level0) s.explicit_tiles.push_back({t, 2.0 * Eigen::Matrix2d::Identity()});
   return s;
+}
+
+
+SpaceRefinement refine_space(const CatmullClarkSpace& space, int steps) {
+  if (space.boundary_rule() == BoundaryRule::kClamped) {
+    ExtendedRefinement r = refine_extended({space.control_mesh(), space.num_elements()}, steps);
+    return {std::make_shared<const CatmullClarkSpace>(std::move(r.net), "refined net"), std::move(r.prolongation)};
+  }
+  NetRefinement r = refine_net(space.control_mesh(), steps);
+  return {std::make_shared<const CatmullClarkSpace>(r.mesh, "refined net"), std::move(r.prolongation)};
 }
 
 }  // namespace iga::basis::catmull_clark

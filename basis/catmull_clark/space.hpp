@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "basis/catmull_clark/ghost_net.hpp"
 #include "basis/catmull_clark/irregular_patch.hpp"
 #include "basis/catmull_clark/stam.hpp"
 #include "basis/catmull_clark/topology.hpp"
@@ -17,8 +18,16 @@ namespace iga::basis::catmull_clark {
 
 /// The Catmull–Clark subdivision splines of a control net (any polygons; open or closed; planar or in 3D).
 ///
-/// Boundary rule: OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER. The limit boundary is the uniform cubic B-spline
-/// of the boundary polygon; boundary vertices with a single face are interpolated corners.
+/// Boundary rule (BoundaryRule): natural, OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER: the limit boundary is the
+/// uniform cubic B-spline of the boundary polygon, boundary vertices with a single face are interpolated
+/// corners, and every function has zero second normal derivative on the boundary (u_nn = 0: L2 rate 2.5, H1
+/// 1.5 for solutions with u_nn != 0). Clamped: the net is extended by one ring of ghost faces (ghost_net.hpp)
+/// and the space is the extended net's restricted to the net's faces: on regular boundary parts the bicubic
+/// B-splines with an open knot vector in the normal direction (full order); a boundary vertex with k faces is
+/// an interior vertex of valence k + 2 of the extended net. The dofs are the extended net's vertices (the
+/// net's first, then the ghosts, when no global step was needed); its functions are not interpolating on
+/// the boundary (three rows of them live there; Dirichlet conditions go through TraceSpace's dependent
+/// traces).
 /// Regular vertices: interior with 4 faces, boundary with 2 faces, corners (1 face). Extraordinary vertices
 /// (EVs): interior valence n != 4 (3..16), boundary vertices with 3..15 faces (n = faces + 1 <= 16).
 ///
@@ -59,20 +68,36 @@ namespace iga::basis::catmull_clark {
 /// every other EV face (irregular_patch.hpp). Both are exact; the choice exists for cross-checks.
 enum class IrregularMethod { kStam, kSubdivision };
 
+/// The rule at the boundary of an open net (see above); closed nets have none and both give the same space.
+enum class BoundaryRule { kNatural, kClamped };
+/// "natural" / "clamped"; InputError naming the accepted words for anything else.
+BoundaryRule boundary_rule(const std::string& word);
+std::string to_string(BoundaryRule rule);
+
 class CatmullClarkSpace final : public Space {
  public:
   explicit CatmullClarkSpace(const mesh::PolyMesh& mesh, const std::string& name = "mesh",
-                             IrregularMethod method = IrregularMethod::kStam);
+                             IrregularMethod method = IrregularMethod::kStam,
+                             BoundaryRule boundary = BoundaryRule::kNatural);
+  /// The clamped space of an extended net (refine_extended's output; its domain all quads, at most one EV per
+  /// domain face), no global step.
+  CatmullClarkSpace(ExtendedNet net, const std::string& name);
+
+  BoundaryRule boundary_rule() const { return boundary_; }
 
   int refinement_steps() const { return steps_; }
-  /// The net whose vertices are the dofs.
+  /// The net whose vertices are the dofs: with the clamped rule the extended net, whose faces beyond
+  /// num_elements() are the ghosts.
   const mesh::PolyMesh& control_mesh() const { return net_; }
+  /// The faces that are elements (the first num_elements() of control_mesh()) as a mesh on the same vertices,
+  /// with the same half-edge numbering: its boundary is the domain's.
+  const mesh::PolyMesh& domain_mesh() const { return boundary_ == BoundaryRule::kClamped ? domain_ : net_; }
   /// Rotation r of element e: corner c_i is vertex face(e)[(i + r) % 4] of the control net.
   int rotation(Index e) const { return elements_[static_cast<std::size_t>(e)].rotation; }
 
   std::string name() const override { return "cc"; }
   Index num_dofs() const override { return net_.num_vertices(); }
-  Index num_elements() const override { return net_.num_faces(); }
+  Index num_elements() const override { return static_cast<Index>(elements_.size()); }
   ElementKind kind(Index e) const override { return elements_[static_cast<std::size_t>(e)].kind; }
   /// 3 for regular faces (bicubic B-spline patches, also with extrapolated phantom points at the boundary);
   /// std::nullopt at an extraordinary vertex.
@@ -108,10 +133,13 @@ class CatmullClarkSpace final : public Space {
     const StamEvaluator* stam = nullptr;
     Eigen::MatrixXd stam_map;  // (2n+8) × dofs
   };
-  void build_elements(const std::string& name, IrregularMethod method);
+  void build(const std::string& name, IrregularMethod method, Index domain_faces);
+  void build_elements(const std::string& name, IrregularMethod method, Index domain_faces);
   void build_boundary();
 
   mesh::PolyMesh net_;
+  mesh::PolyMesh domain_;  // clamped: the domain faces alone
+  BoundaryRule boundary_ = BoundaryRule::kNatural;
   int steps_ = 0;
   std::vector<Element> elements_;
   std::vector<Index> dofs_;
@@ -121,7 +149,15 @@ class CatmullClarkSpace final : public Space {
 };
 
 /// The geometry of a control net: CatmullClarkSpace + the control net's vertex positions (dim 2 when all
-/// z == 0, else 3).
-Geometry make_catmull_clark_geometry(const mesh::PolyMesh& mesh, const std::string& name = "mesh");
+/// z == 0, else 3); with the clamped rule the extended net's (ghosts at their extrapolated positions).
+Geometry make_catmull_clark_geometry(const mesh::PolyMesh& mesh, const std::string& name = "mesh",
+                                     BoundaryRule boundary = BoundaryRule::kNatural);
+
+/// `steps` uniform refinements of a space with its rule: the refined space and P (fine dofs × dofs).
+struct SpaceRefinement {
+  std::shared_ptr<const CatmullClarkSpace> space;
+  Eigen::SparseMatrix<double> prolongation;
+};
+SpaceRefinement refine_space(const CatmullClarkSpace& space, int steps);
 
 }  // namespace iga::basis::catmull_clark

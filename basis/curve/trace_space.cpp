@@ -23,6 +23,28 @@ Eigen::VectorXd sample_parameters() {
   return t;
 }
 
+// Sample parameters of an edge of an element that is not polynomial (an extraordinary corner may sit at either
+// end): the Chebyshev points on each dyadic piece [2^-(l+1), 2^-l], l = 1..kGradedLevels, of both halves
+// and on the two end pieces. The traces are piecewise polynomial on such pieces, so functions that differ only
+// near an end are told apart (10 points on the whole edge would call them dependent).
+constexpr int kGradedLevels = 24;
+
+Eigen::VectorXd graded_sample_parameters() {
+  const Eigen::VectorXd c = sample_parameters();
+  Eigen::VectorXd t(2 * (kGradedLevels + 1) * kSamples);
+  Eigen::Index k = 0;
+  auto piece = [&](double a, double b) {
+    for (int i = 0; i < kSamples; ++i) {
+      const double x = a + (b - a) * c(i);
+      t(k++) = x;
+      t(k++) = 1.0 - x;
+    }
+  };
+  for (int l = 1; l <= kGradedLevels; ++l) piece(std::ldexp(1.0, -l - 1), std::ldexp(1.0, -l));
+  piece(0.0, std::ldexp(1.0, -kGradedLevels - 1));
+  return t;
+}
+
 Eigen::Matrix2Xd side_points(Shape shape, int side, const Eigen::VectorXd& t) {
   Eigen::Matrix2Xd pts(2, t.size());
   for (Index k = 0; k < t.size(); ++k) pts.col(k) = side_point(shape, side, t(k));
@@ -145,14 +167,15 @@ TraceSpace::TraceSpace(std::shared_ptr<const Space> space, std::vector<BoundaryE
   if (!space_) throw InputError("trace: no space");
   check_edges(*space_, edges_);
   const Index n = space_->num_dofs();
-  const Eigen::VectorXd t = sample_parameters();
+  const Eigen::VectorXd t = sample_parameters(), graded = graded_sample_parameters();
   // Sampled restrictions, edge by edge; the largest |value| of each function on each edge.
   std::vector<Eigen::MatrixXd> samples(edges_.size());
   std::vector<double> peak(static_cast<std::size_t>(n), 0.0);
   BasisValues values;
   for (std::size_t k = 0; k < edges_.size(); ++k) {
     const BoundaryEdge& b = edges_[k];
-    space_->evaluate(b.element, side_points(space_->kind(b.element).shape, b.side, t), 0, values);
+    const bool polynomial = space_->polynomial_degree(b.element).has_value();
+    space_->evaluate(b.element, side_points(space_->kind(b.element).shape, b.side, polynomial ? t : graded), 0, values);
     samples[k] = values.value;
     const std::span<const Index> dofs = space_->dofs(b.element);
     for (std::size_t i = 0; i < dofs.size(); ++i) {
@@ -174,7 +197,7 @@ TraceSpace::TraceSpace(std::shared_ptr<const Space> space, std::vector<BoundaryE
   std::vector<Eigen::Triplet<double>> entries;
   for (std::size_t k = 0; k < edges_.size(); ++k) {
     const std::span<const Index> dofs = space_->dofs(edges_[k].element);
-    const Eigen::MatrixXd gram = samples[k] * samples[k].transpose() / kSamples;
+    const Eigen::MatrixXd gram = samples[k] * samples[k].transpose() / static_cast<double>(samples[k].cols());
     for (std::size_t a = 0; a < dofs.size(); ++a) {
       const Index ra = on[static_cast<std::size_t>(dofs[a])];
       if (ra < 0) continue;

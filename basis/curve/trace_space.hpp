@@ -21,7 +21,9 @@ namespace iga::basis {
 /// receding boundary, e.g. polyhedral splines, whose boundary curves depend on two rows of control points):
 /// a maximal independent set S of them is chosen by rank-revealing sparse QR of their Gram matrix at sample
 /// points (relative threshold 1e-10), every other one φ_j|Γ = Σ_s A_sj φ_s|Γ, and the trace functions are
-/// ψ_k = φ_{S_k}|Γ, S ascending. B-spline and Catmull–Clark traces are independent: A is empty.
+/// ψ_k = φ_{S_k}|Γ, S ascending. B-spline and natural Catmull–Clark traces are independent: A is empty; the
+/// clamped Catmull–Clark boundary has three rows of functions on it (A couples them). Edges of elements that are
+/// not polynomial are sampled on dyadic pieces toward both ends (an extraordinary corner may sit at either).
 /// Derivatives are d/dt through side_tangent; at an end of an edge where the surface evaluator gives none (the
 /// Catmull–Clark limit stencil at an extraordinary vertex) they are those of the degree-9 interpolant of the
 /// edge's traces at Chebyshev points (exact for polynomial traces of degree <= 9, e.g. the cubic boundary curves).
