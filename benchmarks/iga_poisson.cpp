@@ -37,12 +37,14 @@ namespace {
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
-  std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu;
+  std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu, cc_boundary = "natural";
   int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
   int adaptive = -1, admissibility = 2, vtu_degree = 6;
   long long max_dofs = 0;
   double theta = 0.5;
   double reaction = 0.0;
+  std::string dirichlet_method = "strong";
+  double nitsche_penalty = 0.0;  ///< 0: the local estimate
   double max_memory = 0.0;  ///< GiB; 0: what the system has available
   bool quiet = false, mean_zero = false;
   std::string study, degrees, study_output = "study", plots = "png,svg";  ///< --study K0:K1 and its options
@@ -95,6 +97,7 @@ Setup make_setup(const Options& o) {
   if (o.count("degree")) s.bo.degree = o.degree;
   if (o.count("presubdivide")) s.bo.presubdivide = o.presubdivide;
   if (o.count("geometry")) s.bo.geometry = o.geometry;
+  if (o.count("cc-boundary")) s.bo.cc_boundary = o.cc_boundary;
   s.bo.net_name = o.mesh;
   s.degree = basis::degree(*s.backend, s.bo);
   if (!o.mesh.empty()) s.net = mesh::read_obj(o.mesh);
@@ -175,6 +178,8 @@ iga::fem::PoissonProblem make_problem(const Options& o, const iga::basis::Geomet
   if (!o.dirichlet.empty()) problem.dirichlet = std::make_shared<fem::Expression>(o.dirichlet, "--dirichlet");
   fem::select_neumann(problem, o.neumann, o.neumann_boundary, o.neumann_where, geometry.space().boundary_part_names());
   problem.mean_zero = o.mean_zero;
+  problem.dirichlet_method = fem::dirichlet_method(o.dirichlet_method);
+  problem.nitsche_penalty = o.nitsche_penalty;
   return problem;
 }
 
@@ -298,7 +303,8 @@ nlohmann::json report_settings(const Options& o, const Setup& s, const iga::refi
                   {"dirichlet", o.dirichlet.empty() ? (o.exact.empty() ? builtin_text.first : o.exact) : o.dirichlet},
                   {"neumann", o.neumann}, {"neumann_boundary", o.neumann_boundary}, {"neumann_where", o.neumann_where},
                   {"exact", o.exact.empty() ? builtin_text.first : o.exact},
-                  {"reaction", o.reaction}, {"mean_zero", o.mean_zero}};
+                  {"reaction", o.reaction}, {"mean_zero", o.mean_zero},
+                  {"dirichlet_method", o.dirichlet_method}};
   return j;
 }
 
@@ -323,6 +329,7 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["dirichlet_edges"] = r.dirichlet_edges;
   j["neumann_edges"] = r.neumann_edges;
   j["mean_zero"] = r.mean_zero;
+  j["nitsche_penalty"] = r.nitsche_penalty > 0.0 ? nlohmann::json(r.nitsche_penalty) : nlohmann::json(nullptr);
   if (r.mean_zero) j["compatibility_defect"] = r.compatibility_defect;
   j["l2_error"] = nullptr;
   j["h1_error"] = nullptr;
@@ -485,6 +492,7 @@ int main(int argc, char** argv) {
   app.add_option("--mark", o.mark, "--adaptive: doerfler (bulk) or max")->check(CLI::IsMember({"doerfler", "max"}))->capture_default_str();
   app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(iga::io::whole_number(0, 1000000000000LL));
   app.add_option("--admissibility", o.admissibility, "--adaptive: class m of admissible meshes (>= 2; 0 refines exactly the marked elements)")->check(CLI::IsMember({0, 2, 3, 4, 5, 6}))->capture_default_str();
+  app.add_option("--cc-boundary", o.cc_boundary, "cc: natural (the limit boundary rule of OpenSubdiv: u_nn = 0 on the boundary, L2 rate 2.5) or clamped (one ring of ghost control points: open knot vector in the normal direction, full order)")->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
   app.add_option("--presubdivide", o.presubdivide, "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes <= 8 admissible)")->check(iga::io::whole_number(0, 6));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
@@ -494,6 +502,8 @@ int main(int argc, char** argv) {
   app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)")->check(iga::io::non_blank());
   app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0; cc: b<loop>.<segment> between corners; or indices)")->check(iga::io::non_blank());
   app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data, e.g. 'x > 0.999'")->check(iga::io::non_blank());
+  app.add_option("--dirichlet-method", o.dirichlet_method, "strong (L2 projection onto the boundary traces, eliminated) or nitsche (weak, symmetric Nitsche: needs no trace space; for --cc-boundary clamped at boundary extraordinary vertices)")->check(CLI::IsMember({"strong", "nitsche"}))->capture_default_str();
+  app.add_option("--nitsche-penalty", o.nitsche_penalty, "--dirichlet-method nitsche: a fixed penalty γ in γ/h (h the side length); 0: each element's own from its local eigenvalue estimate (coercive by construction)")->check(iga::io::finite_number(0.0))->capture_default_str();
   app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms")->check(iga::io::non_blank());
   app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(iga::io::finite_number(0))->capture_default_str();
@@ -527,7 +537,7 @@ int main(int argc, char** argv) {
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
-  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry"}) {
+  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
   o.vtu_given = app.count("--vtu") > 0;

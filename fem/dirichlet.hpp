@@ -16,6 +16,9 @@ struct DirichletConditions {
   Eigen::SparseMatrix<double, Eigen::RowMajor> coupling;
 };
 
+/// Largest ratio of the LDLᵀ pivots of the boundary mass matrix M_SS that project_dirichlet accepts.
+inline constexpr double kMaxDirichletPivotRatio = 1e8;
+
 /// The L2 projection of g onto the traces of the functions that are non-zero on `edges`, through their trace space
 /// (basis::TraceSpace: which functions live on the edges, and a maximal independent set S of their restrictions).
 /// When the restrictions are independent (B-splines, Catmull–Clark): M_SS g_S = (∫_Γ g φ_s)_S with
@@ -24,6 +27,8 @@ struct DirichletConditions {
 /// φ_j|Γ = Σ_s A_sj φ_s|Γ (TraceSpace::dependent()), and the condition is the affine constraint u_S + A u_J = γ
 /// with the same γ: the trace of u_h is the projection of g, and u_J stays free (so a function whose trace is in
 /// the trace space, e.g. an affine solution, is kept exactly). Empty edges give empty conditions.
+/// NumericalError when M_SS is singular or its pivot ratio exceeds kMaxDirichletPivotRatio (traces that are
+/// independent only at ever smaller scales: the clamped Catmull–Clark boundary at a boundary EV).
 DirichletConditions project_dirichlet(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
                                       std::shared_ptr<const Function> g);
 

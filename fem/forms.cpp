@@ -47,4 +47,33 @@ void BoundaryLoadForm::add(const BoundaryContext& ctx, Eigen::VectorXd& local) c
   local.noalias() += ctx.basis.value * g.cwiseProduct(ctx.weight);
 }
 
+void conormal_derivatives(const BoundaryContext& ctx, Eigen::MatrixXd& dn) {
+  const Eigen::Index q = ctx.weight.size();
+  Eigen::VectorXd su(q), sv(q);
+  for (Eigen::Index k = 0; k < q; ++k) {
+    su(k) = ctx.geo.tu.col(k).dot(ctx.conormal.col(k));
+    sv(k) = ctx.geo.tv.col(k).dot(ctx.conormal.col(k));
+  }
+  dn.noalias() = ctx.basis.du * su.asDiagonal();
+  dn.noalias() += ctx.basis.dv * sv.asDiagonal();
+}
+
+void NitscheForm::add(const BoundaryContext& ctx, Eigen::MatrixXd& local) const {
+  thread_local Eigen::MatrixXd dn, wphi;
+  conormal_derivatives(ctx, dn);
+  wphi.noalias() = ctx.basis.value * ctx.weight.asDiagonal();
+  local.noalias() -= wphi * dn.transpose();
+  local.noalias() -= dn * wphi.transpose();
+  local.noalias() += penalty_(ctx) * wphi * ctx.basis.value.transpose();
+}
+
+void NitscheLoadForm::add(const BoundaryContext& ctx, Eigen::VectorXd& local) const {
+  thread_local Eigen::MatrixXd dn;
+  Eigen::VectorXd g;
+  g_->values(ctx.geo.x, g);
+  conormal_derivatives(ctx, dn);
+  const Eigen::VectorXd wg = g.cwiseProduct(ctx.weight);
+  local.noalias() += penalty_(ctx) * ctx.basis.value * wg - dn * wg;
+}
+
 }  // namespace iga::fem

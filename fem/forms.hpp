@@ -2,6 +2,7 @@
 // Forms are small function objects that turn what the element loop evaluated into a local matrix or
 // vector (DESIGN.md: "a new PDE is a new form, not a new loop").
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 
 #include "basis/basis_values.hpp"
@@ -119,6 +120,36 @@ class BoundaryLoadForm final : public BoundaryLinearForm {
  private:
   std::shared_ptr<const Function> g_;
   std::shared_ptr<const BoundaryFunction> gn_;
+};
+
+/// Nitsche's method for u = g on Γ_D (Nitsche 1971; the symmetric variant, as in IgA by Embar, Dolbow and
+/// Harari 2010): ∫_Γ −(∂_n φ_j) φ_i − φ_j (∂_n φ_i) + β φ_i φ_j ds, ∂_n the derivative along the outward
+/// conormal and β = penalty(side) per element side (γ / h with a fixed γ, or a local estimate: see
+/// fem/poisson.hpp). Consistent (the exact solution satisfies the weak form) and coercive when β exceeds twice
+/// the side's inverse-estimate constant. For spaces whose traces cannot carry strong conditions.
+using NitschePenalty = std::function<double(const BoundaryContext&)>;
+
+/// ∂_n φ_i at the side's points (nloc × q): the physical gradient tu φ_u + tv φ_v against the conormal.
+void conormal_derivatives(const BoundaryContext& ctx, Eigen::MatrixXd& dn);
+
+class NitscheForm final : public BoundaryBilinearForm {
+ public:
+  explicit NitscheForm(NitschePenalty penalty) : penalty_(std::move(penalty)) {}
+  void add(const BoundaryContext& ctx, Eigen::MatrixXd& local) const override;
+
+ private:
+  NitschePenalty penalty_;
+};
+
+/// Its right-hand side: ∫_Γ g (−∂_n φ_i + β φ_i) ds.
+class NitscheLoadForm final : public BoundaryLinearForm {
+ public:
+  NitscheLoadForm(std::shared_ptr<const Function> g, NitschePenalty penalty) : g_(std::move(g)), penalty_(std::move(penalty)) {}
+  void add(const BoundaryContext& ctx, Eigen::VectorXd& local) const override;
+
+ private:
+  std::shared_ptr<const Function> g_;
+  NitschePenalty penalty_;
 };
 
 }  // namespace iga::fem

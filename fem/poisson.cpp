@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "fem/assembler.hpp"
 #include "fem/dirichlet.hpp"
+#include "fem/nitsche.hpp"
 
 namespace iga::fem {
 
@@ -105,10 +106,19 @@ BoundarySplit split_boundary(const basis::Geometry& geometry, const PoissonProbl
   return split;
 }
 
+DirichletMethod dirichlet_method(const std::string& word) {
+  if (word == "strong") return DirichletMethod::kStrong;
+  if (word == "nitsche") return DirichletMethod::kNitsche;
+  throw InputError("Dirichlet method '" + word + "': unknown (known: strong, nitsche)");
+}
+
 void PoissonSolver::setup() {
   if (done_ >= 1) return;
   const basis::Space& space = geometry_.space();
   const PoissonProblem& problem = problem_;
+  if (!(problem.nitsche_penalty >= 0) || !std::isfinite(problem.nitsche_penalty)) {
+    throw InputError("Nitsche penalty must be a finite number >= 0 (0: the default), got " + std::to_string(problem.nitsche_penalty));
+  }
   if (!(problem.reaction >= 0) || !std::isfinite(problem.reaction)) {
     throw InputError("reaction coefficient must be a finite number >= 0, got " + std::to_string(problem.reaction));
   }
@@ -162,7 +172,31 @@ void PoissonSolver::assemble() {
     b += bn;
   }
   DirichletConditions& bc = sys_->bc;
-  bc = project_dirichlet(assembler, dirichlet_edges_, problem.dirichlet ? problem.dirichlet : constant_function(0.0));
+  const std::shared_ptr<const Function> g = problem.dirichlet ? problem.dirichlet : constant_function(0.0);
+  if (problem.dirichlet_method == DirichletMethod::kNitsche) {
+    if (!dirichlet_edges_.empty()) {
+      std::vector<double> beta;
+      NitschePenalty penalty;
+      if (problem.nitsche_penalty > 0.0) {
+        r_.nitsche_penalty = problem.nitsche_penalty;
+        penalty = [gamma = problem.nitsche_penalty](const BoundaryContext& ctx) { return gamma / ctx.weight.sum(); };
+      } else {
+        beta = nitsche_penalties(assembler, dirichlet_edges_, &r_.nitsche_penalty);
+        penalty = [&beta](const BoundaryContext& ctx) { return beta[static_cast<std::size_t>(ctx.element)]; };
+      }
+      const NitscheForm nitsche(penalty);
+      const NitscheLoadForm load(g, penalty);
+      Eigen::SparseMatrix<double> an;
+      Eigen::VectorXd bn;
+      assembler.assemble_boundary(dirichlet_edges_, &nitsche, &load, &an, &bn);
+      a += an;
+      a.makeCompressed();
+      b += bn;
+    }
+    bc = DirichletConditions{};
+  } else {
+    bc = project_dirichlet(assembler, dirichlet_edges_, g);
+  }
   if (singular_) {
     // The kernel is the constants (Σφ_i = 1): make the load orthogonal to them, pin one dof, and shift to
     // mean zero after the solve.
@@ -186,7 +220,16 @@ void PoissonSolver::assemble() {
 void PoissonSolver::solve() {
   if (done_ >= 3) return;
   assemble();
-  const SolveResult s = fem::solve(sys_->reduced.a, sys_->reduced.b, solver_);
+  SolveResult s;
+  try {
+    s = fem::solve(sys_->reduced.a, sys_->reduced.b, solver_);
+  } catch (const NumericalError& e) {
+    if (r_.nitsche_penalty <= 0.0 || std::string(e.what()).find("not positive definite") == std::string::npos) throw;
+    std::ostringstream msg;
+    msg << e.what() << " (Nitsche's penalty, γ = " << r_.nitsche_penalty
+        << " at most, is too small for this space: raise --nitsche-penalty, or leave it 0 for the local estimate)";
+    throw NumericalError(msg.str());
+  }
   r_.solve_seconds = s.seconds;
   r_.solver = s.solver;
   r_.residual_norm = s.residual_norm;

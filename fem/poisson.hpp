@@ -15,6 +15,12 @@
 
 namespace iga::fem {
 
+/// How u = g is imposed on the Dirichlet parts: strongly (project_dirichlet: L2 projection onto the traces,
+/// eliminated), or weakly by Nitsche's method (NitscheForm), which needs no trace space.
+enum class DirichletMethod { kStrong, kNitsche };
+/// "strong" / "nitsche"; InputError otherwise.
+DirichletMethod dirichlet_method(const std::string& word);
+
 struct PoissonProblem {
   std::shared_ptr<const Function> source;           ///< f; null means 0
   std::shared_ptr<const Function> dirichlet;        ///< g_D on the Dirichlet parts; null means 0
@@ -28,6 +34,12 @@ struct PoissonProblem {
   /// to a constant: with mean_zero the solution with ∫u = 0 is returned (the load is made compatible by
   /// removing its mean, reported as compatibility_defect; error norms compare with exact - mean(exact)).
   bool mean_zero = false;
+  DirichletMethod dirichlet_method = DirichletMethod::kStrong;
+  /// Nitsche's penalty: γ > 0 gives β = γ / h on every side (h its length); 0 (default) gives β_K from each
+  /// element's local eigenvalue estimate (fem/nitsche.hpp), which is coercive by construction. A fixed γ that
+  /// is too small leaves the system indefinite: the solve fails with a message naming it. (Measured with the
+  /// clamped Catmull–Clark boundary: γ = 160 sufficed on regular nets, square_evs.obj needed more than 1600.)
+  double nitsche_penalty = 0.0;
 };
 
 struct PoissonResult {
@@ -43,6 +55,7 @@ struct PoissonResult {
   Index solver_iterations = 0;
   std::optional<ErrorNorms> errors; ///< with an exact solution
   Index neumann_edges = 0, dirichlet_edges = 0;
+  double nitsche_penalty = 0.0;     ///< the γ used, or max_K β_K h_K of the local estimate (Nitsche only)
   bool mean_zero = false;           ///< the mean-zero constraint was applied
   double compatibility_defect = 0;  ///< ∫f + ∫g_N before it was removed (mean_zero only)
 };

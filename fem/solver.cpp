@@ -25,6 +25,7 @@ SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b
   if (options.kind == SolverKind::Cholmod) {
     r.solver = "cholmod-supernodal-llt";
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+    llt.cholmod().print = 0;  // failures are reported below in one line, not by CHOLMOD's own warning
     llt.compute(a);
     if (llt.cholmod().status == CHOLMOD_OUT_OF_MEMORY) {
       throw NumericalError("CHOLMOD: out of memory factorising the system matrix (" + std::to_string(a.rows()) +

@@ -12,9 +12,11 @@
 #include "quadrature/rule_provider.hpp"
 #include "refine/refine_smooth.hpp"
 #include "refine/uniform.hpp"
+#include "support/nets.hpp"
 #include "support/rates.hpp"
 
 using namespace iga;
+using iga::test::distorted_square;
 using iga::test::fitted_rate;
 
 namespace {
@@ -27,21 +29,6 @@ fem::PoissonProblem from(const fem::ManufacturedProblem& mp) {
 }
 
 
-// A 4×4-element degree-p rectangle [0,1]² whose interior control points are moved: a non-affine map.
-basis::Geometry distorted_square(int p, unsigned seed) {
-  const basis::Geometry g = refine::refine_uniform(basis::bspline::make_rectangle(p), 2).geometry;
-  const auto& s = dynamic_cast<const basis::bspline::TensorSpace&>(g.space());
-  Eigen::MatrixXd cp = g.control_points();
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> d(-0.04, 0.04);
-  for (Index j = 1; j + 1 < s.num_basis_v(); ++j) {
-    for (Index i = 1; i + 1 < s.num_basis_u(); ++i) {
-      cp(i + s.num_basis_u() * j, 0) += d(rng);
-      cp(i + s.num_basis_u() * j, 1) += d(rng);
-    }
-  }
-  return basis::Geometry(g.space_ptr(), cp);
-}
 }  // namespace
 
 // A linear u is in every isoparametric space (partition of unity + the map itself): reproduced exactly.

@@ -1,0 +1,22 @@
+#pragma once
+// The local penalty of Nitsche's method (forms.hpp, NitscheForm): from each element's own inverse estimate, so
+// that no global constant has to fit every kind of element (extraordinary vertices, ghost functions cut by the
+// boundary).
+#include <span>
+#include <vector>
+
+#include "basis/space.hpp"
+#include "fem/assembler.hpp"
+
+namespace iga::fem {
+
+/// Per element: β_K = 4 λ_max(B_K, A_K) with B_K = Σ over its sides in `edges` of ∫ ∂_n φ ∂_n φᵀ ds and
+/// A_K = ∫_K ∇φ · ∇φᵀ dx (the local generalized eigenvalue problem of Griebel and Schweitzer 2003; Embar,
+/// Dolbow and Harari 2010 for IgA): then 2 ∫_∂K∩Γ ∂_n u u ≤ ½ |u|²_{1,K} + β_K ‖u‖²_{∂K∩Γ}, and the symmetric
+/// Nitsche form is coercive. Both forms vanish on constants (partition of unity), which are removed from A_K by
+/// a rank-one shift. 0 for elements without a side in `edges`. `equivalent_gamma` (optional) receives
+/// max_K β_K h_K, h_K the length of the element's sides in `edges`: the γ of a γ / h penalty that would match.
+std::vector<double> nitsche_penalties(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
+                                      double* equivalent_gamma = nullptr);
+
+}  // namespace iga::fem
