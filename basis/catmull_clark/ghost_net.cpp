@@ -115,19 +115,26 @@ ExtendedRefinement refine_extended(const ExtendedNet& net, int steps) {
       for (Index v : fv) index[static_cast<std::size_t>(v)] = 0;
     }
     std::vector<Eigen::Vector3d> points;
-    std::vector<Eigen::Triplet<double>> select;
     for (Index v = 0; v < m.num_vertices(); ++v) {
       if (index[static_cast<std::size_t>(v)] < 0) continue;
       index[static_cast<std::size_t>(v)] = static_cast<Index>(points.size());
-      select.emplace_back(index[static_cast<std::size_t>(v)], v, 1.0);
       points.push_back(m.point(v));
     }
     for (auto& f : faces) {
       for (Index& v : f) v = index[static_cast<std::size_t>(v)];
     }
-    Eigen::SparseMatrix<double> pick(static_cast<Index>(points.size()), m.num_vertices());
-    pick.setFromTriplets(select.begin(), select.end());
-    r.prolongation = (pick * fine.prolongation * r.prolongation).pruned();
+    // The kept rows of this step's prolongation, then composed with the steps before (one sparse product).
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = fine.prolongation;
+    std::vector<Eigen::Triplet<double>> kept;
+    kept.reserve(static_cast<std::size_t>(rows.nonZeros()));
+    for (Index v = 0; v < m.num_vertices(); ++v) {
+      const Index row = index[static_cast<std::size_t>(v)];
+      if (row < 0) continue;
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, v); it; ++it) kept.emplace_back(row, it.col(), it.value());
+    }
+    Eigen::SparseMatrix<double> step(static_cast<Index>(points.size()), coarse.num_vertices());
+    step.setFromTriplets(kept.begin(), kept.end());
+    r.prolongation = s == 0 ? step : Eigen::SparseMatrix<double>(step * r.prolongation);
     r.net = ExtendedNet{mesh::PolyMesh::build(std::move(points), std::move(faces)), domain_children};
   }
   return r;
