@@ -153,7 +153,11 @@ void CatmullClarkSpace::build_elements(const std::string& name, IrregularMethod 
     for (int i = 0; i < 4; ++i) {
       if (is_extraordinary(net_, fv[i])) {
         el.rotation = i;
-        el.kind = {Shape::Quad, Family::Irregular, ev_valence(net_, fv[i]), net_.is_boundary_vertex(fv[i]), Scheme::CatmullClark};
+        // boundary: the EV lies on the domain's boundary, its ring of elements is not closed (with the clamped
+        // rule it is an interior vertex of the extended net, valence faces + 2; rules that assume a closed ring,
+        // such as the folded macro rules, must not be used there).
+        el.kind = {Shape::Quad, Family::Irregular, ev_valence(net_, fv[i]), domain_mesh().is_boundary_vertex(fv[i]),
+                   Scheme::CatmullClark};
       }
     }
     try {

@@ -39,7 +39,9 @@ namespace iga::basis::catmull_clark {
 ///
 /// Elements = faces of the control net, in order. An element's corners c0..c3 are its face's vertices
 /// rotated so that c0 is its EV (if any): c_i = face[(i + r) % 4]; reference u runs c0 → c1, v runs c0 → c3.
-///   kind: {Quad, Regular, 4}, or {Quad, Irregular, n} at an EV (n = interior valence, or boundary faces + 1).
+///   kind: {Quad, Regular, 4}, or {Quad, Irregular, n} at an EV (n = interior valence, or boundary faces + 1;
+///   clamped: boundary faces + 2, the valence in the extended net); kind.boundary when the EV is on the
+///   domain's boundary (its ring of elements is open, with either rule).
 /// Every element is stored as its dofs plus an operator G from the dofs to the local control points of its
 /// evaluator ("extraction"):
 ///   regular faces: the 4×4 bicubic B-spline grid, phantom points by linear extrapolation across the

@@ -137,7 +137,7 @@ Table load_table(const std::string& path) {
 Rule load_rule(const std::string& path) { return load_table(path).rule; }
 
 Fitted::Fitted(const std::string& directory, Space space)
-    : directory_(directory), space_(space), gauss_(4), tiled_(tiled_rule(4, 12)), rules_(17) {
+    : directory_(directory), space_(space), gauss_(4), tiled_(tiled_rule(4, 12)), rules_(17), sides_(4, 12) {
   if (!std::filesystem::is_directory(directory)) throw InputError(directory, 0, "fitted quadrature: not a directory");
   for (int n = 3; n <= 16; ++n) {
     for (const bool symmetric : {false, true}) {

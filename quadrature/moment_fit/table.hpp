@@ -58,6 +58,8 @@ class Fitted final : public RuleProvider {
   explicit Fitted(const std::string& directory, Space space = Space::Phi);
   const Rule& rule(const basis::ElementKind& kind) const override;
   const Rule1D& edge_rule() const override { return gauss_.edge_rule(); }
+  /// Sides of irregular elements follow their tiles (PerTile(4, 12)'s side rules).
+  const Rule1D& side_rule(const basis::ElementKind& kind, int side) const override { return sides_.side_rule(kind, side); }
   std::string name() const override { return space_ == Space::Phi ? "fitted" : "fitted:" + to_string(space_); }
   Space space() const { return space_; }
   /// The valences with a table.
@@ -69,6 +71,7 @@ class Fitted final : public RuleProvider {
   Gauss gauss_;
   Rule tiled_;  // boundary extraordinary vertices
   std::vector<Rule> rules_;  // by valence; empty rule: none
+  PerTile sides_;
 };
 
 std::unique_ptr<RuleProvider> make_fitted(const std::string& directory, Space space = Space::Phi);

@@ -114,7 +114,7 @@ Rule macro_rule(int r, int levels, Space space) { return macro_rule(r, levels, r
 
 MacroPatch::MacroPatch(int r, int levels, Space space)
     : gauss_(4), r_(r), levels_(levels), space_(space), macro_(macro_rule(r, levels, space)),
-      tiled_(tiled_rule(4, covered_levels(r, levels))) {}
+      tiled_(tiled_rule(4, covered_levels(r, levels))), sides_(4, covered_levels(r, levels)) {}
 
 const Rule& MacroPatch::rule(const basis::ElementKind& kind) const {
   if (is_catmull_clark_irregular(kind)) return kind.boundary ? tiled_ : macro_;

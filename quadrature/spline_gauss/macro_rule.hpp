@@ -76,6 +76,8 @@ class MacroPatch final : public RuleProvider {
   explicit MacroPatch(int r, int levels = 8, Space space = Space::Poisson);
   const Rule& rule(const basis::ElementKind& kind) const override;
   const Rule1D& edge_rule() const override { return gauss_.edge_rule(); }
+  /// Sides of irregular elements follow their tiles (PerTile's side rules over the covered levels).
+  const Rule1D& side_rule(const basis::ElementKind& kind, int side) const override { return sides_.side_rule(kind, side); }
   std::string name() const override;
   int r() const { return r_; }
   int levels() const { return levels_; }
@@ -86,6 +88,7 @@ class MacroPatch final : public RuleProvider {
   int r_, levels_;
   Space space_;
   Rule macro_, tiled_;
+  PerTile sides_;
 };
 
 std::unique_ptr<RuleProvider> make_macro_patch(int r, int levels);
