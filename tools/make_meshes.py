@@ -209,6 +209,7 @@ def main():
     out = os.path.join("data", "meshes")
     os.makedirs(out, exist_ok=True)
     nets = {
+        "square_6x6.obj": (grid(6, 6, 0.0, 1.0, 0.0, 1.0)[:2], "unit square [0,1]^2, 6 x 6 quads, no extraordinary vertex"),
         "square_evs.obj": (square_with_evs(), "unit square [0,1]^2 with interior EVs (valences 3, 5, 6) and boundary EVs"),
         "square_three_holes.obj": (square_with_three_holes(), "unit square with three square holes (area 1 - 12/144); reflex hole corners are boundary EVs"),
         "l_shape.obj": (l_shape(), "L-shaped domain [0,2]^2 minus [1,2]^2 (area 3); the reflex corner is a boundary EV"),
