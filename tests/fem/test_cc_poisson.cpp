@@ -19,6 +19,7 @@
 
 using namespace iga;
 using iga::test::fitted_rate;
+using iga::test::closed_fan;
 using iga::test::square_grid;
 
 namespace {
@@ -238,40 +239,6 @@ Rates rates(const basis::Geometry& coarse, const fem::PoissonProblem& p, int fir
 
 }  // namespace
 
-// A closed fan of n sectors of k × k quads around an interior EV of valence n (its boundary has corners and
-// smooth boundary vertices only): with k = 1 the EV's faces reach the boundary.
-mesh::PolyMesh closed_fan(int n, int k) {
-  std::vector<Eigen::Vector3d> p{Eigen::Vector3d::Zero()};
-  auto dir = [&](int t) { return Eigen::Vector3d(std::cos(2 * M_PI * t / n), std::sin(2 * M_PI * t / n), 0.0); };
-  std::vector<std::vector<Index>> spoke(static_cast<std::size_t>(n), std::vector<Index>(static_cast<std::size_t>(k + 1), 0));
-  for (int t = 0; t < n; ++t) {
-    for (int i = 1; i <= k; ++i) {
-      spoke[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)] = static_cast<Index>(p.size());
-      p.push_back(dir(t) * i / k);
-    }
-  }
-  std::vector<std::vector<Index>> faces;
-  for (int s = 0; s < n; ++s) {
-    std::vector<std::vector<Index>> id(static_cast<std::size_t>(k + 1), std::vector<Index>(static_cast<std::size_t>(k + 1)));
-    for (int i = 0; i <= k; ++i) {
-      for (int j = 0; j <= k; ++j) {
-        Index v;
-        if (j == 0) v = spoke[static_cast<std::size_t>(s)][static_cast<std::size_t>(i)];
-        else if (i == 0) v = spoke[static_cast<std::size_t>((s + 1) % n)][static_cast<std::size_t>(j)];
-        else {
-          v = static_cast<Index>(p.size());
-          p.push_back((dir(s) * i + dir(s + 1) * j) / k);
-        }
-        id[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = v;
-      }
-    }
-    for (int i = 0; i < k; ++i)
-      for (int j = 0; j < k; ++j)
-        faces.push_back({id[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)], id[static_cast<std::size_t>(i + 1)][static_cast<std::size_t>(j)],
-                         id[static_cast<std::size_t>(i + 1)][static_cast<std::size_t>(j + 1)], id[static_cast<std::size_t>(i)][static_cast<std::size_t>(j + 1)]});
-  }
-  return mesh::PolyMesh::build(p, faces);
-}
 
 // The clamped boundary reproduces quadratics up to the boundary (they are in the open-knot space): u = x² − y²
 // (harmonic) with its Dirichlet data is solved exactly on a regular net; the natural rule cannot (u_nn = 2 ≠ 0

@@ -1,6 +1,7 @@
 #pragma once
-// Small geometries shared by tests: the regular m × m quad net of the unit square, and a distorted B-spline
-// square (a non-affine map).
+// Small geometries shared by tests: the regular m × m quad net of the unit square, a closed fan around an
+// interior extraordinary vertex, and a distorted B-spline square (a non-affine map).
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -21,6 +22,42 @@ inline mesh::PolyMesh square_grid(int m) {
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < m; ++i) f.push_back({j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i});
   return mesh::PolyMesh::build(p, f);
+}
+
+/// A closed fan of n sectors of k × k quads around vertex 0, an interior EV of valence n, its spokes of length
+/// `radius`; the boundary has corners (the sectors' outer corners) and smooth boundary vertices only. With k = 1
+/// the EV's faces reach the boundary.
+inline mesh::PolyMesh closed_fan(int n, int k, double radius = 1.0) {
+  std::vector<Eigen::Vector3d> p{Eigen::Vector3d::Zero()};
+  auto dir = [&](int t) { return Eigen::Vector3d(radius * std::cos(2 * M_PI * t / n), radius * std::sin(2 * M_PI * t / n), 0.0); };
+  std::vector<std::vector<Index>> spoke(static_cast<std::size_t>(n), std::vector<Index>(static_cast<std::size_t>(k + 1), 0));
+  for (int t = 0; t < n; ++t) {
+    for (int i = 1; i <= k; ++i) {
+      spoke[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)] = static_cast<Index>(p.size());
+      p.push_back(dir(t) * i / k);
+    }
+  }
+  std::vector<std::vector<Index>> faces;
+  for (int s = 0; s < n; ++s) {
+    std::vector<std::vector<Index>> id(static_cast<std::size_t>(k + 1), std::vector<Index>(static_cast<std::size_t>(k + 1)));
+    for (int i = 0; i <= k; ++i) {
+      for (int j = 0; j <= k; ++j) {
+        Index v;
+        if (j == 0) v = spoke[static_cast<std::size_t>(s)][static_cast<std::size_t>(i)];
+        else if (i == 0) v = spoke[static_cast<std::size_t>((s + 1) % n)][static_cast<std::size_t>(j)];
+        else {
+          v = static_cast<Index>(p.size());
+          p.push_back((dir(s) * i + dir(s + 1) * j) / k);
+        }
+        id[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = v;
+      }
+    }
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j)
+        faces.push_back({id[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)], id[static_cast<std::size_t>(i + 1)][static_cast<std::size_t>(j)],
+                         id[static_cast<std::size_t>(i + 1)][static_cast<std::size_t>(j + 1)], id[static_cast<std::size_t>(i)][static_cast<std::size_t>(j + 1)]});
+  }
+  return mesh::PolyMesh::build(p, faces);
 }
 
 /// A 4×4-element degree-p square [0,1]² whose interior control points are moved by up to 0.04: a non-affine map.
