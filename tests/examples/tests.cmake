@@ -10,8 +10,13 @@ add_test(NAME example_polyhedral_square COMMAND polyhedral_square --mesh ${IGA_E
          WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
 add_test(NAME example_refinement_series COMMAND refinement_series --out ${IGA_EXAMPLE_DIR}/series
          WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+add_test(NAME example_clamped_boundary COMMAND clamped_boundary --mesh ${IGA_EXAMPLE_DATA}/square_6x6.obj
+         WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+add_test(NAME example_clamped_boundary_nitsche COMMAND clamped_boundary --mesh ${IGA_EXAMPLE_DATA}/square_6x6.obj --nitsche
+         WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
 set_tests_properties(example_poisson_annulus example_laplace_beltrami_cube example_polyhedral_square
-                     example_refinement_series PROPERTIES LABELS examples TIMEOUT 300)
+                     example_refinement_series example_clamped_boundary example_clamped_boundary_nitsche
+                     PROPERTIES LABELS examples TIMEOUT 300)
 # refinement_series checks that its files exist: start it from an empty folder, so old files cannot pass for new.
 add_test(NAME example_refinement_series_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${IGA_EXAMPLE_DIR}/series)
 set_tests_properties(example_refinement_series_clean PROPERTIES FIXTURES_SETUP example_series LABELS examples)
