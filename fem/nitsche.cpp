@@ -68,4 +68,27 @@ std::vector<double> nitsche_penalties(const Assembler& assembler, std::span<cons
   return out;
 }
 
+double add_nitsche_terms(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
+                         const std::shared_ptr<const Function>& g, double gamma, Eigen::SparseMatrix<double>& a,
+                         Eigen::VectorXd& b) {
+  std::vector<double> beta;
+  NitschePenalty penalty;
+  double used = gamma;
+  if (gamma > 0.0) {
+    penalty = [gamma](const BoundaryContext& ctx) { return gamma / ctx.weight.sum(); };
+  } else {
+    beta = nitsche_penalties(assembler, edges, &used);
+    penalty = [&beta](const BoundaryContext& ctx) { return beta[static_cast<std::size_t>(ctx.element)]; };
+  }
+  const NitscheForm form(penalty);
+  const NitscheLoadForm load(g, penalty);
+  Eigen::SparseMatrix<double> an;
+  Eigen::VectorXd bn;
+  assembler.assemble_boundary(edges, &form, &load, &an, &bn);
+  a += an;
+  a.makeCompressed();
+  b += bn;
+  return used;
+}
+
 }  // namespace iga::fem

@@ -2,11 +2,13 @@
 // The local penalty of Nitsche's method (forms.hpp, NitscheForm): from each element's own inverse estimate, so
 // that no global constant has to fit every kind of element (extraordinary vertices, ghost functions cut by the
 // boundary).
+#include <memory>
 #include <span>
 #include <vector>
 
 #include "basis/space.hpp"
 #include "fem/assembler.hpp"
+#include "fem/function.hpp"
 
 namespace iga::fem {
 
@@ -18,5 +20,11 @@ namespace iga::fem {
 /// max_K β_K h_K, h_K the length of the element's sides in `edges`: the γ of a γ / h penalty that would match.
 std::vector<double> nitsche_penalties(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
                                       double* equivalent_gamma = nullptr);
+
+/// Adds Nitsche's terms for u = g on `edges` to the system (a, b): β = γ / h per side when gamma > 0, else the
+/// local estimate above. Returns the γ used (or max_K β_K h_K), for the report.
+double add_nitsche_terms(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
+                         const std::shared_ptr<const Function>& g, double gamma, Eigen::SparseMatrix<double>& a,
+                         Eigen::VectorXd& b);
 
 }  // namespace iga::fem

@@ -175,23 +175,7 @@ void PoissonSolver::assemble() {
   const std::shared_ptr<const Function> g = problem.dirichlet ? problem.dirichlet : constant_function(0.0);
   if (problem.dirichlet_method == DirichletMethod::kNitsche) {
     if (!dirichlet_edges_.empty()) {
-      std::vector<double> beta;
-      NitschePenalty penalty;
-      if (problem.nitsche_penalty > 0.0) {
-        r_.nitsche_penalty = problem.nitsche_penalty;
-        penalty = [gamma = problem.nitsche_penalty](const BoundaryContext& ctx) { return gamma / ctx.weight.sum(); };
-      } else {
-        beta = nitsche_penalties(assembler, dirichlet_edges_, &r_.nitsche_penalty);
-        penalty = [&beta](const BoundaryContext& ctx) { return beta[static_cast<std::size_t>(ctx.element)]; };
-      }
-      const NitscheForm nitsche(penalty);
-      const NitscheLoadForm load(g, penalty);
-      Eigen::SparseMatrix<double> an;
-      Eigen::VectorXd bn;
-      assembler.assemble_boundary(dirichlet_edges_, &nitsche, &load, &an, &bn);
-      a += an;
-      a.makeCompressed();
-      b += bn;
+      r_.nitsche_penalty = add_nitsche_terms(assembler, dirichlet_edges_, g, problem.nitsche_penalty, a, b);
     }
     bc = DirichletConditions{};
   } else {
@@ -224,10 +208,14 @@ void PoissonSolver::solve() {
   try {
     s = fem::solve(sys_->reduced.a, sys_->reduced.b, solver_);
   } catch (const NumericalError& e) {
-    if (r_.nitsche_penalty <= 0.0 || std::string(e.what()).find("not positive definite") == std::string::npos) throw;
+    // Only a fixed γ can be too small: the local estimate is coercive by construction.
+    if (problem_.dirichlet_method != DirichletMethod::kNitsche || problem_.nitsche_penalty <= 0.0 ||
+        std::string(e.what()).find("not positive definite") == std::string::npos) {
+      throw;
+    }
     std::ostringstream msg;
     msg << e.what() << " (Nitsche's penalty, γ = " << r_.nitsche_penalty
-        << " at most, is too small for this space: raise --nitsche-penalty, or leave it 0 for the local estimate)";
+        << ", is too small for this space: raise --nitsche-penalty, or leave it 0 for the local estimate)";
     throw NumericalError(msg.str());
   }
   r_.solve_seconds = s.seconds;
