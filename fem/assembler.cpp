@@ -97,6 +97,7 @@ const AssemblyPlan& Assembler::plan() const {
     plan_ = std::make_unique<AssemblyPlan>();
     plan_->pattern.swap(made.pattern);
     plan_->colors.swap(made.colors);
+    plan_->dense.swap(made.dense);
   }
   return *plan_;
 }
@@ -144,7 +145,11 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
   std::vector<Eigen::MatrixXd> mats(contexts.size());
   std::vector<Eigen::VectorXd> vecs(contexts.size());
   std::vector<std::vector<Index>> orders(contexts.size());
+  // Entries between two dense dofs and their loads (AssemblyPlan::dense), per element of the colour: value
+  // positions (the load of dof j as −1 − j) and values, added after the colour in element order.
+  std::vector<std::vector<std::pair<std::ptrdiff_t, double>>> pending;
   for (const std::vector<Index>& colour : p.colors) {
+    if (pending.size() < colour.size()) pending.resize(colour.size());
     parallel_for(static_cast<Index>(colour.size()), [&](Index i) {
       const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
       ElementContext& ctx = contexts[t];
@@ -169,17 +174,39 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
         std::sort(order.begin(), order.end(), [&](Index x, Index y) { return dofs[x] < dofs[y]; });
       }
       const int first_row = static_cast<int>(dofs[order[0]]);
+      std::vector<std::pair<std::ptrdiff_t, double>>& later = pending[static_cast<std::size_t>(i)];
+      later.clear();
+      const bool any_dense =
+          std::any_of(dofs.begin(), dofs.end(), [&](Index d) { return p.dense[static_cast<std::size_t>(d)] != 0; });
       for (Index bl = 0; bl < nloc; ++bl) {
         const Index j = dofs[bl];
+        const bool dense_column = any_dense && p.dense[static_cast<std::size_t>(j)];
         const int* pos = std::lower_bound(inner + outer[j], inner + outer[j + 1], first_row);
         for (Index al : order) {
           const int row = static_cast<int>(dofs[al]);
           while (*pos < row) ++pos;
-          values[pos - inner] += k(al, bl);
+          if (dense_column && p.dense[static_cast<std::size_t>(row)]) {
+            later.emplace_back(pos - inner, k(al, bl));
+          } else {
+            values[pos - inner] += k(al, bl);
+          }
         }
-        b(j) += f(bl);
+        if (dense_column) {
+          later.emplace_back(-1 - static_cast<std::ptrdiff_t>(j), f(bl));
+        } else {
+          b(j) += f(bl);
+        }
       }
     });
+    for (std::size_t i = 0; i < colour.size(); ++i) {
+      for (const auto& [at, v] : pending[i]) {
+        if (at >= 0) {
+          values[at] += v;
+        } else {
+          b(-1 - at) += v;
+        }
+      }
+    }
   }
   AssemblyStats stats;
   for (Index e = 0; e < ne; ++e) {

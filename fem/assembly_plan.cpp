@@ -67,11 +67,14 @@ AssemblyPlan make_assembly_plan(const basis::Space& space) {
   }
   std::fill(a.valuePtr(), a.valuePtr() + nnz, 0.0);
 
-  // Greedy colouring: an element takes the smallest colour no element sharing a dof with it has.
+  // Greedy colouring: an element takes the smallest colour no element sharing a (non-dense) dof with it has.
+  plan.dense.assign(static_cast<std::size_t>(n), 0);
+  for (Index d = 0; d < n; ++d) plan.dense[static_cast<std::size_t>(d)] = start[d + 1] - start[d] > kDenseDofElements;
   std::vector<int> color(static_cast<std::size_t>(ne), -1);
   std::vector<char> used;
   for (Index e = 0; e < ne; ++e) {
     for (Index d : space.dofs(e)) {
+      if (plan.dense[static_cast<std::size_t>(d)]) continue;
       for (Index k = start[d]; k < start[d + 1]; ++k) {
         const int c = color[static_cast<std::size_t>(elems[static_cast<std::size_t>(k)])];
         if (c >= 0) {
