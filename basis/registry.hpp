@@ -27,6 +27,7 @@ struct BackendOptions {
   std::string geometry;       ///< a built-in geometry instead of a net ("geometry": bspline quarter-annulus, l-shape)
   std::string net_name = "mesh";  ///< the net's file name, for messages
   std::string cc_boundary;        ///< "cc-boundary": cc, natural (default when empty) or clamped
+  std::string cc_enrich;          ///< "cc-enrich": cc, none (default when empty) or quadratic (at the EVs)
 };
 
 /// Facts about a build or refinement that a program reports: counts for the JSON report under '/'-separated

@@ -37,7 +37,7 @@ namespace {
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
-  std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu, cc_boundary = "natural";
+  std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu, cc_boundary = "natural", cc_enrich = "none";
   int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
   int adaptive = -1, admissibility = 2, vtu_degree = 6;
   long long max_dofs = 0;
@@ -98,6 +98,7 @@ Setup make_setup(const Options& o) {
   if (o.count("presubdivide")) s.bo.presubdivide = o.presubdivide;
   if (o.count("geometry")) s.bo.geometry = o.geometry;
   if (o.count("cc-boundary")) s.bo.cc_boundary = o.cc_boundary;
+  if (o.count("cc-enrich")) s.bo.cc_enrich = o.cc_enrich;
   s.bo.net_name = o.mesh;
   s.degree = basis::degree(*s.backend, s.bo);
   if (!o.mesh.empty()) s.net = mesh::read_obj(o.mesh);
@@ -493,6 +494,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(iga::io::whole_number(0, 1000000000000LL));
   app.add_option("--admissibility", o.admissibility, "--adaptive: class m of admissible meshes (>= 2; 0 refines exactly the marked elements)")->check(CLI::IsMember({0, 2, 3, 4, 5, 6}))->capture_default_str();
   app.add_option("--cc-boundary", o.cc_boundary, "cc: natural (the limit boundary rule of OpenSubdiv: u_nn = 0 on the boundary, L2 rate 2.5) or clamped (one ring of ghost control points: open knot vector in the normal direction, full order)")->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
+  app.add_option("--cc-enrich", o.cc_enrich, "cc: none or quadratic (three functions per extraordinary vertex, quadratics in the physical coordinates times a C7 cutoff, valence 5 and more and boundary EVs: restores the rates of the regular parts; uniform refinement only)")->check(CLI::IsMember({"none", "quadratic"}))->capture_default_str();
   app.add_option("--presubdivide", o.presubdivide, "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes <= 8 admissible)")->check(iga::io::whole_number(0, 6));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
@@ -537,7 +539,7 @@ int main(int argc, char** argv) {
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
-  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary"}) {
+  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary", "cc-enrich"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
   o.vtu_given = app.count("--vtu") > 0;

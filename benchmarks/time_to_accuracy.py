@@ -28,6 +28,9 @@ CONFIGS = [
                                           "--dirichlet-method", "nitsche", "--quadrature", "tiles:4:8"], range(1, 6)),
     ("cc clamped, square_evs (Nitsche)", ["--basis", "cc", "--mesh", "data/meshes/square_evs.obj", "--cc-boundary", "clamped",
                                           "--dirichlet-method", "nitsche", "--quadrature", "tiles:4:8"], range(1, 6)),
+    ("cc clamped + EV enrichment, square_evs (Nitsche)",
+     ["--basis", "cc", "--mesh", "data/meshes/square_evs.obj", "--cc-boundary", "clamped", "--cc-enrich", "quadratic",
+      "--dirichlet-method", "nitsche", "--quadrature", "tiles:4:8"], range(1, 6)),
     ("bspline p=3, 6x6 net", ["--basis", "bspline", "--mesh", "data/meshes/square_6x6.obj", "--degree", "3"], range(0, 7)),
 ]
 

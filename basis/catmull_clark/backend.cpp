@@ -2,6 +2,7 @@
 #include <Eigen/Dense>
 #include <memory>
 
+#include "basis/catmull_clark/ev_enrichment.hpp"
 #include "basis/catmull_clark/levels.hpp"
 #include "basis/catmull_clark/space.hpp"
 #include "basis/hierarchical/refine.hpp"
@@ -15,6 +16,7 @@ namespace iga::basis {
 namespace {
 
 using catmull_clark::CatmullClarkSpace;
+using catmull_clark::EnrichedSpace;
 using hierarchical::HierarchicalSpace;
 
 const CatmullClarkSpace& cc_of(const Geometry& g) {
@@ -32,7 +34,24 @@ Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFac
     facts.notes.push_back("the net has non-quad faces or faces touching several extraordinary vertices: applied " +
                           std::to_string(steps) + " global Catmull–Clark step(s) first");
   }
-  return g;
+  if (!catmull_clark::enrichment_option(o.cc_enrich)) return g;
+  std::vector<catmull_clark::EnrichmentCentre> centres = catmull_clark::extraordinary_centres(g);
+  facts.counts["cc_enriched_vertices"] = static_cast<long long>(centres.size());
+  if (centres.empty()) facts.notes.push_back("--cc-enrich quadratic: the net has no extraordinary vertex, nothing to enrich");
+  return catmull_clark::enriched_geometry(g, std::move(centres));
+}
+
+// Block-diagonal prolongation: the base's, then the identity on the enrichment dofs (the same functions).
+Eigen::SparseMatrix<double> with_identity(const Eigen::SparseMatrix<double>& p, Index extra) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(static_cast<std::size_t>(p.nonZeros() + extra));
+  for (int c = 0; c < p.outerSize(); ++c) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(p, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  }
+  for (Index k = 0; k < extra; ++k) t.emplace_back(p.rows() + k, p.cols() + k, 1.0);
+  Eigen::SparseMatrix<double> out(p.rows() + extra, p.cols() + extra);
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
 }
 
 // The hierarchical space of a geometry: its own, or (a Catmull–Clark space) the space as level 0 with the
@@ -49,6 +68,12 @@ std::shared_ptr<const HierarchicalSpace> hierarchical_of(const Geometry& g, Eige
 // level 0 first; the control points are prolongated.
 Refinement refine_hierarchical(const Geometry& geometry, std::span<const Index> marked, int admissibility,
                                BackendFacts& facts, bool with_prolongation) {
+  if (dynamic_cast<const EnrichedSpace*>(&geometry.space())) {
+    // InputError, not UnsupportedError (which the adaptive loop reads as "no deeper level"): the option pair is
+    // refused before anything is refined.
+    throw InputError("--cc-enrich quadratic with local refinement (--adaptive): the enriched space has no "
+                     "hierarchical form; use uniform refinement (--refine)");
+  }
   Eigen::SparseMatrix<double> to_h;
   const auto coarse = hierarchical_of(geometry, &to_h);
   return hierarchical::refine_marked_geometry(geometry, coarse, to_h, marked, admissibility, facts, with_prolongation);
@@ -58,6 +83,11 @@ Refinement refine_hierarchical(const Geometry& geometry, std::span<const Index> 
 // touching at most one extraordinary vertex, so no global step is needed again. A hierarchical space: every
 // element split, `steps` times.
 Refinement refine_net(const Geometry& geometry, int steps, BackendFacts& facts) {
+  if (const auto* en = dynamic_cast<const EnrichedSpace*>(&geometry.space())) {
+    Refinement r = refine_net(Geometry(en->base(), en->base_points()), steps, facts);
+    const Index extra = en->num_dofs() - en->base()->num_dofs();
+    return {catmull_clark::enriched_geometry(r.geometry, en->centres()), with_identity(r.prolongation, extra), true};
+  }
   if (std::dynamic_pointer_cast<const HierarchicalSpace>(geometry.space_ptr())) {
     return hierarchical::refine_all_geometry(geometry, steps, facts);
   }
@@ -104,7 +134,7 @@ Backend catmull_clark_backend() {
   b.description = "Catmull–Clark subdivision splines on any control net (exact evaluation at extraordinary vertices)";
   b.default_degree = 3;
   b.default_refine = 1;
-  b.options = {"cc-boundary"};
+  b.options = {"cc-boundary", "cc-enrich"};
   b.from_net = from_net;
   b.refine = refine_net;
   b.refine_marked = refine_hierarchical;

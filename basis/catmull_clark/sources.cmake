@@ -11,5 +11,6 @@ set(IGA_CATMULL_CLARK_SOURCES
   catmull_clark/subdivision_matrix.cpp
   catmull_clark/eigen_structure.cpp
   catmull_clark/backend.cpp
+  catmull_clark/ev_enrichment.cpp
   catmull_clark/exact_view.cpp
 )

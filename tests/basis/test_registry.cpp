@@ -141,7 +141,7 @@ TEST(Registry, OptionsABackendDoesNotTakeAreErrors) {
     check_options(backend("cc"), {"degree"});
     FAIL() << "--degree accepted for cc";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "--degree is not an option of --basis cc (its options: --cc-boundary)");
+    EXPECT_EQ(std::string(e.what()), "--degree is not an option of --basis cc (its options: --cc-boundary, --cc-enrich)");
   }
   try {
     check_options(backend("polyhedral"), {"presubdivide", "degree"});
