@@ -318,6 +318,7 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["elements"] = r.elements;
   j["quadrature"] = quadrature;
   j["quadrature_points"] = r.quadrature_points;
+  if (!r.error_quadrature.empty()) j["error_quadrature"] = r.error_quadrature;
   j["domain_measure"] = r.domain_measure;
   j["threads"] = iga::fem::num_threads();
   j["pattern_seconds"] = r.pattern_seconds;

@@ -242,7 +242,10 @@ void PoissonSolver::errors() {
     exact = shifted_function(exact, -mean(0) / r_.domain_measure);
   }
   if (exact) {
-    r_.errors = compute_errors(*sys_->assembler, r_.u, *exact);
+    const std::unique_ptr<quadrature::RuleProvider> finer = rules_.error_rules();
+    r_.error_quadrature = finer ? finer->name() : rules_.name();
+    r_.errors = finer ? compute_errors(Assembler(geometry_, *finer), r_.u, *exact)
+                      : compute_errors(*sys_->assembler, r_.u, *exact);
     if (!std::isfinite(r_.errors->l2) || !std::isfinite(r_.errors->h1) || !std::isfinite(r_.errors->l2_exact)) {
       throw NumericalError("the error norms against the exact solution are not finite (L2 " + std::to_string(r_.errors->l2) +
                            ", H1 " + std::to_string(r_.errors->h1) + "): does the exact solution overflow?");

@@ -128,3 +128,11 @@ std::string PerTile::name() const {
 }
 
 }  // namespace iga::quadrature
+
+namespace iga::quadrature {
+
+std::unique_ptr<RuleProvider> PerTile::error_rules() const {
+  return std::make_unique<PerTile>(gauss_.points_per_direction() + 2, levels_);
+}
+
+}  // namespace iga::quadrature

@@ -44,6 +44,8 @@ class PerTile final : public RuleProvider {
   const Rule1D& edge_rule() const override { return gauss_.edge_rule(); }
   const Rule1D& side_rule(const basis::ElementKind& kind, int side) const override;
   std::string name() const override;
+  /// PerTile(p + 2, levels).
+  std::unique_ptr<RuleProvider> error_rules() const override;
   int levels() const { return levels_; }
 
  private:

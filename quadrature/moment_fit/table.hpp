@@ -61,6 +61,8 @@ class Fitted final : public RuleProvider {
   /// Sides of irregular elements follow their tiles (PerTile(4, 12)'s side rules).
   const Rule1D& side_rule(const basis::ElementKind& kind, int side) const override { return sides_.side_rule(kind, side); }
   std::string name() const override { return space_ == Space::Phi ? "fitted" : "fitted:" + to_string(space_); }
+  /// PerTile(6, 12): the tiled rule of its boundary EVs with two more points per direction.
+  std::unique_ptr<RuleProvider> error_rules() const override { return std::make_unique<PerTile>(6, 12); }
   Space space() const { return space_; }
   /// The valences with a table.
   std::vector<int> valences() const;

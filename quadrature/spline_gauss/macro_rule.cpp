@@ -134,3 +134,11 @@ std::string MacroPatch::name() const {
 std::unique_ptr<RuleProvider> make_macro_patch(int r, int levels) { return std::make_unique<MacroPatch>(r, levels); }
 
 }  // namespace iga::quadrature::spline_gauss
+
+namespace iga::quadrature::spline_gauss {
+
+std::unique_ptr<RuleProvider> MacroPatch::error_rules() const {
+  return std::make_unique<PerTile>(6, covered_levels(r_, levels_));
+}
+
+}  // namespace iga::quadrature::spline_gauss

@@ -79,6 +79,8 @@ class MacroPatch final : public RuleProvider {
   /// Sides of irregular elements follow their tiles (PerTile's side rules over the covered levels).
   const Rule1D& side_rule(const basis::ElementKind& kind, int side) const override { return sides_.side_rule(kind, side); }
   std::string name() const override;
+  /// PerTile(6, the covered levels): 4 × 4 Gauss is the base of every rule here.
+  std::unique_ptr<RuleProvider> error_rules() const override;
   int r() const { return r_; }
   int levels() const { return levels_; }
   Space space() const { return space_; }
