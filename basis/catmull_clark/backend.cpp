@@ -43,14 +43,10 @@ Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFac
 
 // Block-diagonal prolongation: the base's, then the identity on the enrichment dofs (the same functions).
 Eigen::SparseMatrix<double> with_identity(const Eigen::SparseMatrix<double>& p, Index extra) {
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(p.nonZeros() + extra));
-  for (int c = 0; c < p.outerSize(); ++c) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(p, c); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-  }
-  for (Index k = 0; k < extra; ++k) t.emplace_back(p.rows() + k, p.cols() + k, 1.0);
-  Eigen::SparseMatrix<double> out(p.rows() + extra, p.cols() + extra);
-  out.setFromTriplets(t.begin(), t.end());
+  Eigen::SparseMatrix<double> out = p;
+  out.conservativeResize(p.rows() + extra, p.cols() + extra);
+  for (Index k = 0; k < extra; ++k) out.insert(p.rows() + k, p.cols() + k) = 1.0;
+  out.makeCompressed();
   return out;
 }
 
