@@ -175,6 +175,7 @@ TEST_F(IgaPoisson, HalfBoxOnTheDualOfATriangulation) {
   EXPECT_EQ(j["basis"], "halfbox");
   EXPECT_EQ(j["degree"], 3);
   EXPECT_EQ(j["quadrature"], "tiles:4:16");
+  EXPECT_EQ(j["error_quadrature"], "tiles:6:16");  // two more points per direction for the error norms
   EXPECT_EQ(j["elements"], 512);  // 128 patches of the dual net, each split in four
   EXPECT_LT(j["l2_error_relative"].get<double>(), 1e-10);
   auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
