@@ -44,6 +44,7 @@ void check_options(const Backend& backend, const std::vector<std::string>& given
 }
 
 int degree(const Backend& backend, const BackendOptions& options) {
+  if (backend.degree_of) return backend.degree_of(options);
   return options.degree == BackendOptions::kUnset ? backend.default_degree : options.degree;
 }
 

@@ -24,7 +24,7 @@ struct BackendOptions {
   int degree = kUnset;        ///< polynomial degree per direction ("degree": bspline)
   int presubdivide = kUnset;  ///< Catmull–Clark steps of the net before building ("presubdivide": polyhedral)
   bool degree_raise = false;  ///< Bézier export: raise every patch to the element degree ("degree-raise")
-  std::string geometry;       ///< a built-in geometry instead of a net ("geometry": bspline quarter-annulus, l-shape)
+  std::string geometry;       ///< a built-in geometry or a patch file instead of a net ("geometry": bspline)
   std::string net_name = "mesh";  ///< the net's file name, for messages
   std::string cc_boundary;        ///< "cc-boundary": cc, natural (default when empty) or clamped
   std::string cc_enrich;          ///< "cc-enrich": cc, none (default when empty) or quadratic (at the EVs)
@@ -66,6 +66,9 @@ struct Backend {
   /// "degree-raise", "refine-intervals".
   std::vector<std::string> options;
   int default_degree = 3;  ///< degree per direction of the functions (the default of --degree when taken)
+  /// The degree per direction these options give when it is not just --degree or default_degree (bspline: a patch
+  /// file's own degree); empty otherwise. InputError when the options contradict each other.
+  std::function<int(const BackendOptions&)> degree_of;
   int default_refine = 0;  ///< refinement steps programs apply by default
   bool nested = true;      ///< refinement gives nested spaces with a prolongation
   /// net → geometry; throws InputError naming the file (options.net_name) on a net it cannot take.

@@ -47,6 +47,13 @@ int num_sides(Shape shape);
 Eigen::Vector2d side_point(Shape shape, int side, double t);
 Eigen::Vector2d side_tangent(Shape shape, int side);
 
+/// The form of a NURBS element: its functions are R_i = w_i N_i / Σ_j w_j N_j with N_i polynomials of degree at
+/// most `degree` in each of u and v and w_i the weights of its dofs, in dofs(e) order.
+struct RationalForm {
+  int degree = 0;
+  Eigen::VectorXd weights;
+};
+
 class Space {
  public:
   virtual ~Space() = default;
@@ -78,6 +85,9 @@ class Space {
   /// std::nullopt (the default) for an infinitely piecewise element (at an extraordinary vertex or face) and for
   /// backends that do not say. Output uses it to write such elements exactly as Bézier cells (io/bezier_writer).
   virtual std::optional<int> polynomial_degree(Index) const { return std::nullopt; }
+  /// The rational form of element e when it is a NURBS element (output writes it exactly as a rational Bézier cell);
+  /// std::nullopt (the default) for every other element.
+  virtual std::optional<RationalForm> rational_form(Index) const { return std::nullopt; }
 };
 
 }  // namespace iga::basis

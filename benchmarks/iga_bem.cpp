@@ -415,7 +415,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> backend_list;
   for (const auto& b : basis::backends()) backend_list.push_back(b.name);
   app.add_option("--basis", o.basis, "geometry backend (as iga-poisson): " + basis::backend_names())->check(CLI::IsMember(backend_list))->capture_default_str();
-  app.add_option("--geometry", o.geometry, "bspline without --mesh: quarter-annulus (default) or l-shape")->check(iga::io::non_blank());
+  app.add_option("--geometry", o.geometry, "bspline without --mesh: quarter-annulus (default, exact: NURBS), l-shape, square, or a patch file FILE.json")->check(iga::io::non_blank());
   app.add_option("--geometry-refine", o.geometry_refine, "uniform refinement steps of the geometry (its map is unchanged; the BEM takes the boundary sides as curve elements, the FEM of --compare-fem and the interior sampling use its elements); default: the backend's")->check(iga::io::whole_number(0, 10));
   app.add_option("--degree", o.degree, "degree p of the splines for u and q on the boundary")->check(iga::io::whole_number(1, 8))->capture_default_str();
   app.add_option("--refine", o.refine, "each boundary curve element is split into 2^K BEM elements")->check(iga::io::whole_number(0, 16))->capture_default_str();

@@ -488,7 +488,7 @@ int main(int argc, char** argv) {
   app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(iga::io::whole_number(1, 12))->capture_default_str();
   app.add_option("--refine-intervals", o.refine_intervals, "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
   app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for polyhedral, where each step is a Catmull–Clark step of the net)")->check(iga::io::whole_number(0, 14));
-  app.add_option("--geometry", o.geometry, "bspline without --mesh: the built-in geometry, quarter-annulus (default) or l-shape ([0,2]^2 minus (1,2]^2, one patch with a C0 line from the reflex corner)")->check(iga::io::non_blank());
+  app.add_option("--geometry", o.geometry, "bspline without --mesh: the built-in geometry, quarter-annulus (default, exact: NURBS), l-shape ([0,2]^2 minus (1,2]^2, one patch with a C0 line from the reflex corner), square (the unit square), or a patch file FILE.json (README, Patch files)")->check(iga::io::non_blank());
   app.add_option("--adaptive", o.adaptive, "adaptive refinement: STEPS rounds of solve, estimate (residual estimator), mark, refine locally (bspline: THB; the --refine steps come first); one .vtu per step plus a .pvd series")->check(iga::io::whole_number(0, 200));
   app.add_option("--theta", o.theta, "--adaptive: marking parameter in (0, 1]")->check(iga::io::finite_number(1e-6, 1.0))->capture_default_str();
   app.add_option("--mark", o.mark, "--adaptive: doerfler (bulk) or max")->check(CLI::IsMember({"doerfler", "max"}))->capture_default_str();

@@ -17,6 +17,7 @@ namespace iga::io {
 struct CellControl {
   Eigen::MatrixXd x;
   Eigen::VectorXd u, exact;
+  Eigen::VectorXd weights;  ///< rational weights of the points (NURBS elements); empty for polynomial cells
 };
 
 /// Side fine_side of element `fine`, at its side parameter τ ∈ [0, 1], is side coarse_side of element `coarse` at

@@ -34,7 +34,7 @@ class PointMerger {
  public:
   PointMerger(const Eigen::Vector3d& lo, double tol, double payload_tol) : lo_(lo), tol_(tol), payload_tol_(payload_tol) {}
 
-  Index insert(const Eigen::Vector3d& x, double payload, bool mergeable) {
+  Index insert(const Eigen::Vector3d& x, double payload, double weight, bool mergeable) {
     const Key key = key_of(x);
     if (mergeable) {
       for (int dz = -1; dz <= 1; ++dz) {
@@ -44,7 +44,8 @@ class PointMerger {
             if (it == grid_.end()) continue;
             for (const Index id : it->second) {
               if ((points_[static_cast<std::size_t>(id)] - x).lpNorm<Eigen::Infinity>() <= tol_ &&
-                  std::abs(payload_[static_cast<std::size_t>(id)] - payload) <= payload_tol_) {
+                  std::abs(payload_[static_cast<std::size_t>(id)] - payload) <= payload_tol_ &&
+                  std::abs(weight_[static_cast<std::size_t>(id)] - weight) <= 1e-12 * std::abs(weight)) {
                 return id;
               }
             }
@@ -55,6 +56,7 @@ class PointMerger {
     const auto id = static_cast<Index>(points_.size());
     points_.push_back(x);
     payload_.push_back(payload);
+    weight_.push_back(weight);
     if (mergeable) grid_[key].push_back(id);
     return id;
   }
@@ -75,7 +77,7 @@ class PointMerger {
   Eigen::Vector3d lo_;
   double tol_, payload_tol_;
   std::vector<Eigen::Vector3d> points_;
-  std::vector<double> payload_;
+  std::vector<double> payload_, weight_;
   std::unordered_map<Key, std::vector<Index>, KeyHash> grid_;
 };
 
@@ -107,14 +109,30 @@ void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorX
     local_cp.row(a).head(geometry.dim()) = geometry.control_points().row(dofs[static_cast<std::size_t>(a)]);
     if (u != nullptr) local_u(a) = (*u)(dofs[static_cast<std::size_t>(a)]);
   }
-  const Eigen::MatrixXd x_nodes = bv.value.transpose() * local_cp;  // nodes × 3
-  out.x = layout.collocation.solve(x_nodes);
-  if (u != nullptr) out.u = layout.collocation.solve(bv.value.transpose() * local_u);
-  if (exact != nullptr) {
-    Eigen::VectorXd values;
-    exact->values(x_nodes.transpose(), values);
-    out.exact = layout.collocation.solve(values);
+  Eigen::MatrixXd x_nodes = bv.value.transpose() * local_cp;  // nodes × 3
+  Eigen::VectorXd u_nodes = u != nullptr ? Eigen::VectorXd(bv.value.transpose() * local_u) : Eigen::VectorXd();
+  Eigen::VectorXd exact_nodes;
+  if (exact != nullptr) exact->values(x_nodes.transpose(), exact_nodes);
+  // A NURBS element: W = Σ w_j N_j is 1 / Σ_i R_i / w_i at the nodes (since Σ N_i = 1), and W, W x, W u are
+  // polynomials of the cell's degree: their Bernstein coefficients are the weights and the weighted points.
+  const std::optional<basis::RationalForm> rational = space.rational_form(e);
+  Eigen::VectorXd w_nodes;
+  if (rational) {
+    w_nodes = (bv.value.transpose() * rational->weights.cwiseInverse()).cwiseInverse();
+    x_nodes = w_nodes.asDiagonal() * x_nodes;
+    if (u != nullptr) u_nodes = w_nodes.cwiseProduct(u_nodes);
+    if (exact != nullptr) exact_nodes = w_nodes.cwiseProduct(exact_nodes);
+    out.weights = layout.collocation.solve(w_nodes);
+  } else {
+    out.weights.resize(0);
   }
+  const Eigen::VectorXd inv = rational ? Eigen::VectorXd(out.weights.cwiseInverse()) : Eigen::VectorXd();
+  out.x = layout.collocation.solve(x_nodes);
+  if (rational) out.x = inv.asDiagonal() * out.x;
+  if (u != nullptr) out.u = layout.collocation.solve(u_nodes);
+  if (u != nullptr && rational) out.u = inv.cwiseProduct(out.u);
+  if (exact != nullptr) out.exact = layout.collocation.solve(exact_nodes);
+  if (exact != nullptr && rational) out.exact = inv.cwiseProduct(out.exact);
 }
 
 /// Every cell's layout and control points, hanging sides of non-polynomial elements followed (bezier_hanging.hpp);
@@ -127,8 +145,9 @@ void all_cells(const basis::Geometry& geometry, const Eigen::VectorXd* u, const 
   exact.assign(ne, false);
   for (std::size_t e = 0; e < ne; ++e) {
     const std::optional<int> d = space.polynomial_degree(static_cast<Index>(e));
-    degree[e] = d.value_or(options.degree);
-    exact[e] = d.has_value();
+    const std::optional<basis::RationalForm> rational = d ? std::nullopt : space.rational_form(static_cast<Index>(e));
+    degree[e] = d ? *d : rational ? rational->degree : options.degree;
+    exact[e] = d.has_value() || rational.has_value();
   }
   const std::vector<HangingSide> hanging = hanging_sides(space, degree);
   layout.resize(ne);
@@ -161,15 +180,18 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
   std::vector<bool> exact_cell;
   all_cells(geometry, u, options, layout, control, exact_cell);
   BezierMesh mesh;
-  std::vector<double> u_values, exact_values;
+  std::vector<double> u_values, exact_values, weights;
+  const bool any_rational = std::any_of(control.begin(), control.end(), [](const CellControl& c) { return c.weights.size() > 0; });
   for (Index e = 0; e < space.num_elements(); ++e) {
     const BezierLayout& l = *layout[static_cast<std::size_t>(e)];
     const CellControl& c = control[static_cast<std::size_t>(e)];
     for (int k = 0; k < l.num_points(); ++k) {
       const double uk = u != nullptr ? c.u(k) : 0.0;
-      const Index id = merger.insert(c.x.row(k).transpose(), uk, l.on_side[static_cast<std::size_t>(k)]);
+      const double wk = c.weights.size() > 0 ? c.weights(k) : 1.0;
+      const Index id = merger.insert(c.x.row(k).transpose(), uk, wk, l.on_side[static_cast<std::size_t>(k)]);
       if (id == static_cast<Index>(u_values.size())) {
         u_values.push_back(uk);
+        weights.push_back(wk);
         exact_values.push_back(options.exact ? c.exact(k) : 0.0);
       }
       mesh.connectivity.push_back(id);
@@ -187,6 +209,7 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
   if (options.exact) {
     mesh.exact = Eigen::Map<const Eigen::VectorXd>(exact_values.data(), static_cast<Eigen::Index>(exact_values.size()));
   }
+  if (any_rational) mesh.weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<Eigen::Index>(weights.size()));
   return mesh;
 }
 
@@ -214,6 +237,7 @@ vtkNew<vtkUnstructuredGrid> grid_with_points(const BezierMesh& mesh) {
     grid->GetPointData()->AddArray(point_array("exact", mesh.exact));
     if (mesh.u.size() > 0) grid->GetPointData()->AddArray(point_array("error", mesh.u - mesh.exact));
   }
+  if (mesh.weights.size() > 0) grid->GetPointData()->SetRationalWeights(point_array("RationalWeights", mesh.weights));
   return grid;
 }
 
@@ -293,11 +317,13 @@ BezierMesh outline_points(const BezierMesh& mesh, Outline& o) {
   points.points.resize(3, count);
   if (mesh.u.size() > 0) points.u.resize(count);
   if (mesh.exact.size() > 0) points.exact.resize(count);
+  if (mesh.weights.size() > 0) points.weights.resize(count);
   for (Eigen::Index i = 0; i < count; ++i) {
     const Index from = old_id[static_cast<std::size_t>(i)];
     points.points.col(i) = mesh.points.col(from);
     if (mesh.u.size() > 0) points.u(i) = mesh.u(from);
     if (mesh.exact.size() > 0) points.exact(i) = mesh.exact(from);
+    if (mesh.weights.size() > 0) points.weights(i) = mesh.weights(from);
   }
   return points;
 }

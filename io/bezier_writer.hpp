@@ -39,6 +39,7 @@ struct BezierMesh {
   Eigen::Matrix3Xd points;  ///< control points (physical; z = 0 for planar geometries)
   Eigen::VectorXd u;        ///< Bernstein coefficients of u per point (empty: no field)
   Eigen::VectorXd exact;    ///< coefficients of the degree-d interpolant of options.exact per point (empty without)
+  Eigen::VectorXd weights;  ///< rational weights per point (VTK's RationalWeights; empty when no cell is rational)
   std::vector<Index> offsets{0};  ///< cell c: points connectivity[offsets[c] .. offsets[c + 1] − 1], VTK's order
   std::vector<Index> connectivity;
   std::vector<int> degree;             ///< per cell

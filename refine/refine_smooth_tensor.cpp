@@ -3,6 +3,7 @@
 #include <memory>
 #include <string>
 
+#include "basis/bspline/rational_space.hpp"
 #include "basis/bspline/tensor_space.hpp"
 #include "core/error.hpp"
 #include "refine/refine_smooth.hpp"
@@ -56,10 +57,12 @@ Eigen::SparseMatrix<double> refine_smooth_matrix(int degree, const std::vector<d
 
 Refinement refine_smooth_tensor(const basis::Geometry& geometry, const std::vector<Index>& intervals_u,
                                 const std::vector<Index>& intervals_v) {
-  const basis::bspline::TensorSpace* tensor = basis::bspline::tensor_space(geometry.space());
+  // NURBS: the B-spline space underneath is refined, the weights carried along (refine_rational).
+  const basis::bspline::RationalSpace* rational = basis::bspline::rational_space(geometry.space());
+  const basis::bspline::TensorSpace* tensor = rational ? &rational->base() : basis::bspline::tensor_space(geometry.space());
   if (!tensor) {
     throw UnsupportedError("refine-and-smooth refinement of a '" + geometry.space().name() +
-                           "' space is not implemented (tensor-product B-splines only)");
+                           "' space is not implemented (tensor-product B-splines and NURBS only)");
   }
   auto one = [](const basis::bspline::KnotVector& kv, const std::vector<Index>& intervals,
                 basis::bspline::KnotVector& fine) {
@@ -92,6 +95,11 @@ Refinement refine_smooth_tensor(const basis::Geometry& geometry, const std::vect
   Eigen::SparseMatrix<double> r(ru.rows() * rv.rows(), ru.cols() * rv.cols());
   r.setFromTriplets(trip.begin(), trip.end());
   auto fine = std::make_shared<const basis::bspline::TensorSpace>(fu, fv);
+  if (rational) {
+    Eigen::SparseMatrix<double> prolongation;
+    basis::Geometry g = basis::bspline::refine_rational(geometry, fine, r, &prolongation);
+    return {std::move(g), std::move(prolongation), true};
+  }
   Eigen::MatrixXd cp = r * geometry.control_points();
   return {basis::Geometry(fine, std::move(cp)), std::move(r), true};
 }

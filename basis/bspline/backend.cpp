@@ -3,7 +3,9 @@
 
 #include "basis/bspline/extraction.hpp"
 #include "basis/bspline/knot_insertion.hpp"
+#include "basis/bspline/patch_file.hpp"
 #include "basis/bspline/patches.hpp"
+#include "basis/bspline/rational_space.hpp"
 #include "basis/bspline/tensor_space.hpp"
 #include "basis/hierarchical/geometry_refinement.hpp"
 #include "basis/thb/dyadic_levels.hpp"
@@ -31,6 +33,10 @@ std::shared_ptr<const HierarchicalSpace> thb_of(const Geometry& g, Eigen::Sparse
 // THB refinement of the marked elements (a patch becomes level 0 first); the control points are prolongated.
 Refinement refine_thb(const Geometry& geometry, std::span<const Index> marked, int admissibility, BackendFacts& facts,
                       bool with_prolongation) {
+  // An InputError, not UnsupportedError: the adaptive loop reads the latter as "the deepest level is reached".
+  if (bspline::rational_space(geometry.space())) {
+    throw InputError("local (THB) refinement of a NURBS patch is not implemented (uniform refinement is)");
+  }
   Eigen::SparseMatrix<double> to_thb;
   const auto coarse = thb_of(geometry, &to_thb);
   return hierarchical::refine_marked_geometry(geometry, coarse, to_thb, marked, admissibility, facts, with_prolongation);
@@ -44,9 +50,14 @@ const TensorSpace& tensor_of(const Geometry& g) {
 
 // Each step inserts the midpoint of every non-empty knot interval in both directions (Oslo, thesis §2.3.1);
 // the refinement matrices of the steps compose.
+// NURBS patches refine their B-spline space and carry the weights along (rational_space.hpp).
 Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts& facts) {
-  if (!bspline::tensor_space(geometry.space())) return hierarchical::refine_all_geometry(geometry, steps, facts);  // THB
-  std::shared_ptr<const TensorSpace> coarse(geometry.space_ptr(), &tensor_of(geometry));
+  const bspline::RationalSpace* rational = bspline::rational_space(geometry.space());
+  if (!rational && !bspline::tensor_space(geometry.space())) {
+    return hierarchical::refine_all_geometry(geometry, steps, facts);  // THB
+  }
+  std::shared_ptr<const TensorSpace> coarse = rational ? rational->base_ptr()
+                                                       : std::shared_ptr<const TensorSpace>(geometry.space_ptr(), &tensor_of(geometry));
   Eigen::SparseMatrix<double> total;
   for (int s = 0; s < steps; ++s) {
     auto fine = std::make_shared<const TensorSpace>(bspline::insert_midpoints(coarse->knots_u()),
@@ -60,12 +71,20 @@ Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts& f
     }
     coarse = fine;
   }
+  if (rational) {
+    Eigen::SparseMatrix<double> prolongation;
+    Geometry fine = bspline::refine_rational(geometry, coarse, total, &prolongation);
+    return {std::move(fine), std::move(prolongation), true};
+  }
   Eigen::MatrixXd cp = total * geometry.control_points();
   return {Geometry(coarse, std::move(cp)), std::move(total), true};
 }
 
 // Every element by Bézier extraction: BB coefficient (a, b) = Σ_ij C_u(i, a) C_v(j, b) P_dof(i, j).
 std::vector<BezierPatch> extracted_patches(const Geometry& geometry, const BackendOptions&, BackendFacts&) {
+  if (bspline::rational_space(geometry.space())) {
+    throw UnsupportedError("Bezier export of a NURBS patch is not implemented (the .bv format has no weights)");
+  }
   if (!bspline::tensor_space(geometry.space())) {
     throw UnsupportedError("Bezier export of a THB (hierarchical B-spline) space is not implemented");
   }
@@ -99,23 +118,46 @@ std::vector<BezierPatch> extracted_patches(const Geometry& geometry, const Backe
   return patches;
 }
 
+// --degree, or a patch file's larger degree (a --degree that differs from it is refused: patch files are not
+// degree-elevated).
+int patch_degree(const BackendOptions& o) {
+  if (!bspline::is_patch_file(o.geometry)) return o.degree == BackendOptions::kUnset ? 3 : o.degree;
+  const Geometry g = bspline::read_patch(o.geometry);
+  const bspline::RationalSpace* r = bspline::rational_space(g.space());
+  const TensorSpace& t = r ? r->base() : tensor_of(g);
+  const int p = std::max(t.knots_u().degree(), t.knots_v().degree());
+  if (o.degree != BackendOptions::kUnset && o.degree != p) {
+    throw InputError("--degree " + std::to_string(o.degree) + ": the patch file " + o.geometry + " has degree (" +
+                     std::to_string(t.knots_u().degree()) + ", " + std::to_string(t.knots_v().degree()) +
+                     "), and patch files are not degree-elevated; leave --degree out");
+  }
+  return p;
+}
+
 }  // namespace
 
 Backend bspline_backend() {
   Backend b;
   b.name = "bspline";
-  b.description = "tensor-product B-splines on one patch (a structured quad-grid net, or the quarter annulus)";
+  b.description = "tensor-product B-splines and NURBS on one patch (a structured quad-grid net, the exact quarter annulus, or a patch file)";
   b.options = {"degree", "refine-intervals", "geometry"};
   b.default_degree = 3;
   b.default_refine = 4;
   b.from_net = [](const mesh::PolyMesh& net, const BackendOptions& o, BackendFacts&) {
     return bspline::geometry_from_quad_grid(net, o.degree == BackendOptions::kUnset ? 3 : o.degree, o.net_name);
   };
+  b.degree_of = patch_degree;
   b.default_geometry = [](const BackendOptions& o) {
+    if (bspline::is_patch_file(o.geometry)) {
+      patch_degree(o);  // refuses a --degree that is not the file's
+      return bspline::read_patch(o.geometry);
+    }
     const int p = o.degree == BackendOptions::kUnset ? 3 : o.degree;
     if (o.geometry.empty() || o.geometry == "quarter-annulus") return bspline::make_quarter_annulus(p);
     if (o.geometry == "l-shape") return bspline::make_l_shape(p);
-    throw InputError("--geometry: unknown built-in geometry '" + o.geometry + "' (quarter-annulus, l-shape)");
+    if (o.geometry == "square") return bspline::make_rectangle(p);
+    throw InputError("--geometry: unknown built-in geometry '" + o.geometry +
+                     "' (quarter-annulus, l-shape, square, or a patch file FILE.json)");
   };
   b.refine = refine_midpoints;
   b.refine_marked = refine_thb;

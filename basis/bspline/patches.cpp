@@ -1,7 +1,9 @@
 #include "basis/bspline/patches.hpp"
 
+#include <cmath>
 #include <memory>
 
+#include "basis/bspline/rational_space.hpp"
 #include "core/error.hpp"
 
 namespace iga::basis::bspline {
@@ -37,18 +39,25 @@ Geometry make_quarter_annulus(int degree, double r_inner, double r_outer) {
                      " cannot represent it; use degree >= 2 or give a mesh");
   }
   if (!(r_inner > 0.0 && r_outer > r_inner)) throw InputError("quarter annulus: need 0 < r_inner < r_outer");
-  Eigen::MatrixXd arc(3, 2);
-  arc << 1.0, 0.0, 1.0, 1.0, 0.0, 1.0;
-  const Eigen::MatrixXd arc_p = elevate_to(arc, degree);  // (p+1) × 2, along v
+  // The quarter circle as a rational quadratic Bézier curve (The NURBS Book, §7.3): points (1,0), (1,1), (0,1)
+  // with weights 1, cos 45°, 1; raised to degree p in homogeneous coordinates (w x, w y, w).
+  const double c = std::sqrt(0.5);
+  Eigen::MatrixXd arc(3, 3);
+  arc << 1.0, 0.0, 1.0, c, c, c, 0.0, 1.0, 1.0;
+  const Eigen::MatrixXd arc_p = elevate_to(arc, degree);  // (p+1) × 3, along v
   Eigen::MatrixXd radius(2, 1);
   radius << r_inner, r_outer;
   const Eigen::MatrixXd radius_p = elevate_to(radius, degree);  // (p+1) × 1, along u
   const int n = degree + 1;
   Eigen::MatrixXd cp(n * n, 2);
+  Eigen::VectorXd weights(n * n);
   for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) cp.row(i + n * j) = radius_p(i, 0) * arc_p.row(j);
+    for (int i = 0; i < n; ++i) {
+      cp.row(i + n * j) = radius_p(i, 0) * arc_p.block(j, 0, 1, 2) / arc_p(j, 2);
+      weights(i + n * j) = arc_p(j, 2);
+    }
   }
-  return make_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp);
+  return make_rational_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp, weights);
 }
 
 Geometry make_rectangle(int degree, double x0, double x1, double y0, double y1) {

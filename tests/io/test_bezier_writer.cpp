@@ -112,7 +112,7 @@ Index compare_cells(vtkUnstructuredGrid* grid, const basis::Geometry& g, const E
     const basis::Shape shape = space.kind(e).shape;
     const bool polynomial = exact_cell[static_cast<std::size_t>(e)];
     if (polynomial) {
-      EXPECT_TRUE(space.polynomial_degree(e).has_value()) << "element " << e;
+      EXPECT_TRUE(space.polynomial_degree(e).has_value() || space.rational_form(e).has_value()) << "element " << e;
     }
     exact_cells += polynomial ? 1 : 0;
     vtkCell* cell = grid->GetCell(static_cast<vtkIdType>(e));
@@ -216,16 +216,33 @@ Index check_geometry(const std::string& name, const basis::Geometry& g) {
   return open;
 }
 
-TEST(BezierWriter, BsplineDegreesTwoAndThreeAreExact) {
-  for (int degree : {2, 3}) {
-    basis::BackendOptions options;
-    options.degree = degree;
-    basis::BackendFacts facts;
-    const basis::Backend& b = basis::backend("bspline");
-    const basis::Geometry g = basis::make_refined_geometry(b, nullptr, options, 2, facts).geometry;
-    for (Index e = 0; e < g.space().num_elements(); ++e) EXPECT_EQ(g.space().polynomial_degree(e), degree);
-    const Index open = check_geometry("bspline" + std::to_string(degree), g);
-    EXPECT_EQ(open, static_cast<Index>(g.space().boundary_edges().size()));
+// B-splines (the L-shape) and NURBS (the default quarter annulus, written as rational Bézier cells with VTK's
+// RationalWeights) of degrees 2 and 3: every cell exact.
+TEST(BezierWriter, BsplineAndNurbsDegreesTwoAndThreeAreExact) {
+  for (const std::string geometry : {"l-shape", ""}) {
+    for (int degree : {2, 3}) {
+      basis::BackendOptions options;
+      options.degree = degree;
+      options.geometry = geometry;
+      basis::BackendFacts facts;
+      const basis::Backend& b = basis::backend("bspline");
+      const basis::Geometry g = basis::make_refined_geometry(b, nullptr, options, 2, facts).geometry;
+      for (Index e = 0; e < g.space().num_elements(); ++e) {
+        if (geometry.empty()) {
+          ASSERT_TRUE(g.space().rational_form(e).has_value());
+          EXPECT_EQ(g.space().rational_form(e)->degree, degree);
+        } else {
+          EXPECT_EQ(g.space().polynomial_degree(e), degree);
+        }
+      }
+      const std::string name = (geometry.empty() ? "nurbs" : "bspline") + std::to_string(degree);
+      const Index open = check_geometry(name, g);
+      EXPECT_EQ(open, static_cast<Index>(g.space().boundary_edges().size()));
+      const Eigen::VectorXd u = field(g);
+      const io::BezierMesh mesh = io::bezier_mesh(g, &u);
+      EXPECT_EQ(mesh.num_polynomial, g.space().num_elements()) << name;
+      EXPECT_EQ(mesh.weights.size() > 0, geometry.empty()) << name;
+    }
   }
 }
 
@@ -245,6 +262,7 @@ TEST(BezierWriter, HierarchicalSpacesWithHangingSides) {
   // side against two finer ones is one cell side against two (check_no_cracks compares them along the pieces).
   basis::BackendOptions options;
   options.degree = 2;
+  options.geometry = "l-shape";  // THB refines B-spline patches (not NURBS)
   basis::BackendFacts facts;
   const basis::Geometry thb = refined_locally(
       basis::make_refined_geometry(basis::backend("bspline"), nullptr, options, 1, facts).geometry);
