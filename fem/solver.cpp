@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "fem/threads.hpp"
 
 namespace iga::fem {
 
@@ -26,7 +27,7 @@ SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b
     r.solver = "cholmod-supernodal-llt";
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
     llt.cholmod().print = 0;  // failures are reported below in one line, not by CHOLMOD's own warning
-    llt.compute(a);
+    within_thread_limit([&] { llt.compute(a); });  // CHOLMOD's supernodal parallel regions ask for 4 threads
     if (llt.cholmod().status == CHOLMOD_OUT_OF_MEMORY) {
       throw NumericalError("CHOLMOD: out of memory factorising the system matrix (" + std::to_string(a.rows()) +
                            " unknowns, " + std::to_string(a.nonZeros()) + " non-zeros); try --solver cg");
@@ -35,7 +36,7 @@ SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b
       throw NumericalError("CHOLMOD: the system matrix (" + std::to_string(a.rows()) +
                            " unknowns) is not positive definite; is the problem well posed?");
     }
-    r.x = llt.solve(b);
+    within_thread_limit([&] { r.x = llt.solve(b); });
     if (llt.info() != Eigen::Success) throw NumericalError("CHOLMOD: the solve failed");
   } else {
     r.solver = "cg-ichol";

