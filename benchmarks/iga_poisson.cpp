@@ -326,6 +326,7 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["solve_seconds"] = r.solve_seconds;
   j["solver"] = r.solver;
   j["solver_iterations"] = r.solver_iterations;
+  j["solver_ordering"] = r.solver_ordering;
   j["residual_norm"] = r.residual_norm;
   j["residual_tolerance"] = solver.max_residual;
   j["dirichlet_edges"] = r.dirichlet_edges;

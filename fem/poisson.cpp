@@ -222,6 +222,7 @@ void PoissonSolver::solve() {
   r_.solver = s.solver;
   r_.residual_norm = s.residual_norm;
   r_.solver_iterations = s.iterations;
+  r_.solver_ordering = s.ordering;
   r_.u = expand(sys_->reduced, s.x, sys_->bc, geometry_.space().num_dofs());
   if (singular_) r_.u.array() -= sys_->ones_load.dot(r_.u) / r_.domain_measure;
   done_ = 3;

@@ -54,6 +54,7 @@ struct PoissonResult {
   std::string solver;
   double residual_norm = 0.0;       ///< relative residual of the reduced system
   Index solver_iterations = 0;
+  std::string solver_ordering;  ///< the direct solver's fill-reducing ordering ("amd", "metis"; empty for CG)
   std::optional<ErrorNorms> errors; ///< with an exact solution
   Index neumann_edges = 0, dirichlet_edges = 0;
   double nitsche_penalty = 0.0;     ///< the γ used, or max_K β_K h_K of the local estimate (Nitsche only)

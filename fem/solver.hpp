@@ -22,6 +22,7 @@ struct SolverOptions {
 struct SolveResult {
   Eigen::VectorXd x;
   std::string solver;          ///< "cholmod-supernodal-llt" or "cg-ichol"
+  std::string ordering;        ///< the direct solver's fill-reducing ordering: "amd" or "metis" (empty for CG)
   double residual_norm = 0.0;  ///< ||A x - b|| / ||b|| (absolute when b = 0)
   Index iterations = 0;        ///< CG iterations (0 for the direct solver)
   double seconds = 0.0;        ///< factorisation + solve
