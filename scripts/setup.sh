@@ -11,7 +11,7 @@ packages=(
   build-essential cmake
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnlopt-cxx-dev libosd-dev libvtk9-dev
   libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev
-  python3-matplotlib
+  python3-matplotlib libbenchmark-dev
 )
 # ParaView, to look at the output: Debian's python3-paraview (pvpython) declares Conflicts: python3-vtk9, which
 # libvtk9-dev depends on, so apt would remove it to install ours. The paraview GUI package only recommends
