@@ -229,6 +229,17 @@ TEST_F(IgaPoisson, HalfBoxOnTheDualOfATriangulation) {
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
+// --geometry square: the unit square as one polynomial patch (area 1, the linear patch test exact with the default
+// rule), and the report names CHOLMOD's ordering (a small system: AMD, fem/solver.cpp).
+TEST_F(IgaPoisson, UnitSquareGeometryAndSolverOrdering) {
+  const Outcome r = run("--quiet --geometry square --degree 2 --refine 2 --problem linear --vtu none");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = report();
+  EXPECT_NEAR(j["domain_measure"].get<double>(), 1.0, 1e-14);
+  EXPECT_LT(j["l2_error"].get<double>(), 1e-12);
+  EXPECT_EQ(j["solver_ordering"], "amd");
+}
+
 // Local refinement by refine-and-smooth: three steps halving interval 0 in both directions grade the mesh
 // toward one corner: 2, 3, 4 intervals per direction (16 elements); the patch test stays exact. The annulus is a
 // NURBS patch: a linear u is in its space, but the stiffness integrand is rational, so the patch test is exact only
