@@ -88,6 +88,12 @@ class Space {
   /// The rational form of element e when it is a NURBS element (output writes it exactly as a rational Bézier cell);
   /// std::nullopt (the default) for every other element.
   virtual std::optional<RationalForm> rational_form(Index) const { return std::nullopt; }
+  /// The lowest-numbered element whose local functions, in reference coordinates and local order, are those of
+  /// element e (evaluate() gives the same values at any points, up to rounding): e itself, the default, unless the
+  /// backend knows such a twin (every interior element of a uniform B-spline space has the same functions). The
+  /// assembler evaluates a twin class once per rule and reuses the values (issue 17); the values used are always
+  /// those of the class's lowest element, so results do not depend on the order elements are visited.
+  virtual Index reference_element(Index e) const { return e; }
 };
 
 }  // namespace iga::basis

@@ -111,14 +111,17 @@ void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
   ctx.rule = &rules_.rule(space.kind(e));
   ctx.dim = geometry_.dim();
   ctx.derivatives = derivatives;
-  space.evaluate(e, ctx.rule->points, derivatives, ctx.basis);
+  evaluate_basis(e, ctx);
   geometry_.evaluate(e, ctx.basis, ctx.geo, true, derivatives);
   ctx.weight = ctx.rule->weights.cwiseProduct(ctx.geo.measure);
   const Eigen::Index q = ctx.rule->size();
   ctx.grad.resize(ctx.basis.value.rows(), ctx.dim * q);
+  thread_local Eigen::RowVectorXd tu, tv;  // row c of T, contiguous (a row of the 3 × q blocks is strided)
   for (int c = 0; c < ctx.dim; ++c) {
-    ctx.grad.middleCols(c * q, q) = ctx.basis.du.array().rowwise() * ctx.geo.tu.row(c).array() +
-                                    ctx.basis.dv.array().rowwise() * ctx.geo.tv.row(c).array();
+    tu = ctx.geo.tu.row(c);
+    tv = ctx.geo.tv.row(c);
+    ctx.grad.middleCols(c * q, q) =
+        ctx.basis.du.array().rowwise() * tu.array() + ctx.basis.dv.array().rowwise() * tv.array();
   }
   if (derivatives >= 2) {
     prepare_second_derivatives(ctx);
@@ -126,6 +129,29 @@ void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
     ctx.laplacian.resize(0, 0);  // nothing stale from an earlier call with 2
     ctx.hessian.resize(0, 0);
   }
+}
+
+void Assembler::evaluate_basis(Index e, ElementContext& ctx) const {
+  const basis::Space& space = geometry_.space();
+  const Index twin = space.reference_element(e);
+  if (twin == e) {  // the class's lowest element (or a class of one): evaluated, the same values as the cache's
+    space.evaluate(e, ctx.rule->points, ctx.derivatives, ctx.basis);
+    return;
+  }
+  const auto key = std::make_tuple(twin, ctx.rule, ctx.derivatives);
+  const basis::BasisValues* values = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(twins_mutex_);
+    auto it = twins_.find(key);
+    if (it == twins_.end()) {
+      auto made = std::make_unique<basis::BasisValues>();
+      space.evaluate(twin, ctx.rule->points, ctx.derivatives, *made);
+      it = twins_.emplace(key, std::move(made)).first;
+    }
+    values = it->second.get();
+  }
+  basis::BasisValues::for_each_block(*values, ctx.basis, ctx.derivatives,
+                                     [](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) { to = from; });
 }
 
 AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,

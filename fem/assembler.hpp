@@ -4,7 +4,11 @@
 // one scatter into a precomputed sparsity pattern.
 #include <Eigen/Sparse>
 #include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "basis/geometry.hpp"
@@ -61,9 +65,17 @@ class Assembler {
   void prepare(Index e, ElementContext& ctx, int derivatives = 1) const;
 
  private:
+  /// Element e's local functions at its rule's points into ctx.basis: evaluated, or copied from the values of
+  /// its twin class (basis::Space::reference_element), computed once per class, rule and derivative order.
+  void evaluate_basis(Index e, ElementContext& ctx) const;
+
   const basis::Geometry& geometry_;
   const quadrature::RuleProvider& rules_;
   mutable std::unique_ptr<AssemblyPlan> plan_;
+  /// Reference values of twin classes: (lowest element, rule, derivatives) → values. Entries are never removed or
+  /// changed once made, so a pointer read under the lock stays valid after it.
+  mutable std::mutex twins_mutex_;
+  mutable std::map<std::tuple<Index, const quadrature::Rule*, int>, std::unique_ptr<const basis::BasisValues>> twins_;
 };
 
 }  // namespace iga::fem

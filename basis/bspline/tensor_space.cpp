@@ -9,6 +9,27 @@
 
 namespace iga::basis::bspline {
 
+namespace {
+// For each interval, the lowest interval whose extraction operator equals its own to 1e-14 (the entries lie in
+// [0, 1]; uniform knots give operators that differ by rounding only). Compared against at most 64 distinct
+// operators (uniform knots have 2p − 1), so irregular knot vectors cost O(64) per interval and simply find fewer twins.
+std::vector<Index> twin_intervals(const std::vector<Eigen::MatrixXd>& c) {
+  std::vector<Index> twin(c.size());
+  std::vector<Index> distinct;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    twin[i] = static_cast<Index>(i);
+    for (Index d : distinct) {
+      if ((c[static_cast<std::size_t>(d)] - c[i]).cwiseAbs().maxCoeff() <= 1e-14) {
+        twin[i] = d;
+        break;
+      }
+    }
+    if (twin[i] == static_cast<Index>(i) && distinct.size() < 64) distinct.push_back(twin[i]);
+  }
+  return twin;
+}
+}  // namespace
+
 TensorSpace::TensorSpace(KnotVector u, KnotVector v) : u_(std::move(u)), v_(std::move(v)) {
   nu_ = u_.num_basis();
   nv_ = v_.num_basis();
@@ -18,6 +39,8 @@ TensorSpace::TensorSpace(KnotVector u, KnotVector v) : u_(std::move(u)), v_(std:
   nloc_ = (pu + 1) * (pv + 1);
   cu_ = extraction_operators(u_);
   cv_ = extraction_operators(v_);
+  twin_u_ = twin_intervals(cu_);
+  twin_v_ = twin_intervals(cv_);
   dofs_.resize(static_cast<std::size_t>(num_elements() * nloc_));
   for (Index ey = 0; ey < ney_; ++ey) {
     const Index sy = v_.interval_spans()[ey] - pv;
@@ -29,6 +52,11 @@ TensorSpace::TensorSpace(KnotVector u, KnotVector v) : u_(std::move(u)), v_(std:
       }
     }
   }
+}
+
+Index TensorSpace::reference_element(Index e) const {
+  const Index ex = e % nex_, ey = e / nex_;
+  return twin_u_[static_cast<std::size_t>(ex)] + nex_ * twin_v_[static_cast<std::size_t>(ey)];
 }
 
 std::span<const Index> TensorSpace::dofs(Index e) const {

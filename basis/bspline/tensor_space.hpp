@@ -27,6 +27,9 @@ class TensorSpace final : public Space {
   ElementKind kind(Index) const override { return {}; }
   /// max(p_u, p_v): every element is a polynomial patch.
   std::optional<int> polynomial_degree(Index) const override { return std::max(u_.degree(), v_.degree()); }
+  /// Knot intervals whose extraction operators agree to 1e-14 have the same functions: all but p − 1 at each end of
+  /// a uniform knot vector (the operator depends on the ratios of the 2p − 1 spans around the interval).
+  Index reference_element(Index e) const override;
   std::span<const Index> dofs(Index e) const override;
   Index max_local_dofs() const override { return nloc_; }
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
@@ -49,6 +52,7 @@ class TensorSpace final : public Space {
   KnotVector u_, v_;
   Index nu_ = 0, nv_ = 0, nex_ = 0, ney_ = 0, nloc_ = 0;
   std::vector<Eigen::MatrixXd> cu_, cv_;  // extraction operators per interval
+  std::vector<Index> twin_u_, twin_v_;    // the lowest interval with the same operator, per interval
   std::vector<Index> dofs_;               // nloc_ per element
 };
 

@@ -5,9 +5,11 @@
 //   GFLOP/s      flops counted from the loop structure (below) per second;
 //   scatter_GB/s for BM_Assembly: bytes of the scatter (8 bytes read + 8 written per matrix entry, 4 per row index
 //                read) per second of (assembly − kernel) time, the scatter's achieved bandwidth.
-// Flops per element with n local functions, q points, planar (dim 2; the map is gathered as n × 3): basis tensor
-// products 3nq, map x, x_u, x_v 18nq, physical gradients 6nq, weighted copies 2nq, stiffness G W G^T 4n²q, load 2nq:
-// 4n²q + 31nq (bicubic, n = q = 16: 24,320). Rational (NURBS) and subdivision elements do more than counted.
+// Flops per element with n local functions, q points, planar (dim 2), counted from the loop structure of what runs:
+// basis tensor products 3nq (none for an element whose reference values are a twin's, copied), the map's x, x_u, x_v
+// 12nq (two rows), physical gradients 6nq, weighted copies 2nq, load 2nq, and the stiffness G W G^T 4n²q, or 3n²q
+// on the compile-time bicubic path (16 × 16, symmetric: the upper right quarter is mirrored). A bicubic twin
+// element: 3n²q + 22nq = 17,920. Rational (NURBS) and subdivision elements do more than counted.
 //
 //   build/benchmarks/micro/bench-element-kernels --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
@@ -87,9 +89,11 @@ const Case& cached(const std::string& name) {
   return it->second;
 }
 
-double flops_per_element(const fem::ElementContext& ctx) {
+double flops_per_element(const basis::Space& space, const fem::ElementContext& ctx) {
   const double n = static_cast<double>(ctx.basis.value.rows()), q = static_cast<double>(ctx.num_points());
-  return 4 * n * n * q + 31 * n * q;
+  const bool bicubic = ctx.basis.value.rows() == 16 && ctx.grad.cols() == 32;
+  const bool twin = space.reference_element(ctx.element) != ctx.element;
+  return (bicubic ? 3 : 4) * n * n * q + (twin ? 0 : 3) * n * q + 22 * n * q;
 }
 
 void element_kernel(benchmark::State& state, const std::string& name) {
@@ -113,7 +117,7 @@ void element_kernel(benchmark::State& state, const std::string& name) {
     load.add(ctx, f);
     benchmark::DoNotOptimize(k.data());
     benchmark::DoNotOptimize(f.data());
-    flops += flops_per_element(ctx);
+    flops += flops_per_element(c.geometry.space(), ctx);
     e = (e + 1) % ne;
   }
   state.counters["ns/element"] = benchmark::Counter(static_cast<double>(state.iterations()) * 1e-9,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
 
 #include "basis/bspline/bernstein.hpp"
 #include "basis/bspline/extraction.hpp"
@@ -177,6 +178,47 @@ TEST(TensorSpace, ValuesAreProductsOfCoxDeBoor) {
 }
 
 // Knot insertion: the refined spline equals the coarse one (Cox–de Boor on both knot vectors).
+// Space::reference_element: on uniform knots with spacing 0.1 (not a power of two: the operators differ by rounding),
+// the operator of an interval depends on the p − 1 knot spans on either side, so all but p − 1 intervals at each end
+// share one and (2p − 1)² elements are distinct; every element's twin is its lowest, itself a twin of nothing lower,
+// with the same functions at random points. Irregular spacing (spans 1, 2, 1.5, 3, ...) leaves every interval
+// distinct. (Geometric spacing would not: the operator depends on span ratios only.)
+TEST(TensorSpace, TwinElementsHaveTheSameFunctions) {
+  const int p = 3;
+  std::vector<double> t(p + 1, 0.0), graded(p + 1, 0.0);
+  const double spans[] = {1.0, 2.0, 1.5, 3.0, 1.2, 2.5, 1.0, 1.7, 2.2, 1.4};
+  double x = 0.0;
+  for (int i = 1; i < 10; ++i) {
+    t.push_back(0.1 * i);
+    graded.push_back(x += spans[i - 1]);
+  }
+  for (int i = 0; i <= p; ++i) {
+    t.push_back(1.0);
+    graded.push_back(x + spans[9]);
+  }
+  const TensorSpace uniform(KnotVector(p, t), KnotVector(p, t));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Eigen::Matrix2Xd pts(2, 9);
+  for (Index k = 0; k < pts.cols(); ++k) pts.col(k) << u01(rng), u01(rng);
+  std::set<Index> distinct;
+  basis::BasisValues a, b;
+  for (Index e = 0; e < uniform.num_elements(); ++e) {
+    const Index twin = uniform.reference_element(e);
+    ASSERT_LE(twin, e);
+    EXPECT_EQ(uniform.reference_element(twin), twin);
+    distinct.insert(twin);
+    uniform.evaluate(e, pts, 2, a);
+    uniform.evaluate(twin, pts, 2, b);
+    EXPECT_LE((a.value - b.value).cwiseAbs().maxCoeff(), 1e-14) << "element " << e;
+    EXPECT_LE((a.du - b.du).cwiseAbs().maxCoeff(), 1e-12) << "element " << e;
+    EXPECT_LE((a.duv - b.duv).cwiseAbs().maxCoeff(), 1e-11) << "element " << e;
+  }
+  EXPECT_EQ(distinct.size(), static_cast<std::size_t>((2 * p - 1) * (2 * p - 1)));
+  const TensorSpace geometric(KnotVector(p, graded), KnotVector(p, t));
+  for (Index ex = 0; ex < geometric.num_elements_u(); ++ex) EXPECT_EQ(geometric.reference_element(ex), ex);
+}
+
 TEST(KnotInsertion, RefinedSplineIsUnchanged) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> x01(0.0, 3.0), c(-1.0, 1.0);

@@ -1,6 +1,7 @@
 // The element loop: closed-form element matrices, the sparsity pattern and colouring, reproducibility.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 #include <set>
@@ -81,8 +82,12 @@ TEST(AssemblyPlan, PatternAndColouring) {
 }
 
 // Assembly sums each entry in colour order: the same bits for 1 and 2 threads.
+// The NURBS annulus (every element evaluated) and the B-spline L-shape (interior elements share reference values,
+// basis::Space::reference_element).
 TEST(Assembler, ReproducibleForAnyThreadCount) {
-  const basis::Geometry g = refine::refine_uniform(basis::bspline::make_quarter_annulus(3), 4).geometry;
+  for (const basis::Geometry& g : {refine::refine_uniform(basis::bspline::make_quarter_annulus(3), 4).geometry,
+                                   refine::refine_uniform(basis::bspline::make_l_shape(3), 3).geometry}) {
+    SCOPED_TRACE(g.space().num_elements());
   const quadrature::Gauss rules(4);
   const fem::StiffnessForm k;
   const fem::SourceForm f(fem::make_function([](const Eigen::Vector3d& x) { return std::sin(x(0)) + x(1); }));
@@ -101,6 +106,46 @@ TEST(Assembler, ReproducibleForAnyThreadCount) {
   EXPECT_EQ((b1 - b2).cwiseAbs().maxCoeff(), 0.0);
   // Rows of a stiffness matrix sum to zero (constants are in the kernel).
   EXPECT_LE((a1 * Eigen::VectorXd::Ones(a1.cols())).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
+
+// Issue 17's bicubic path: on a uniform bicubic patch with a curved map (interior elements are twins), prepare()
+// gives every element the values a direct evaluation gives (to rounding: the twin's operator may differ from the
+// element's own in the last bit), and the stiffness form's compile-time 16 × 16 kernel equals the element matrix
+// summed point by point from the same gradients.
+TEST(Assembler, TwinReferenceValuesAndTheBicubicKernelAgreeWithDirectEvaluation) {
+  basis::Geometry coarse = basis::bspline::make_rectangle(3);
+  Eigen::MatrixXd p = coarse.control_points();
+  for (Index i = 0; i < p.rows(); ++i) p(i, 0) += 0.1 * std::sin(3.0 * p(i, 1));  // a curved, non-affine map
+  const basis::Geometry g =
+      refine::refine_uniform(basis::Geometry(coarse.space_ptr(), p), 3).geometry;  // 8 × 8 uniform intervals
+  const basis::Space& space = g.space();
+  Index twins = 0;
+  for (Index e = 0; e < space.num_elements(); ++e) twins += space.reference_element(e) != e;
+  EXPECT_EQ(twins, 64 - 25);  // (2p − 1)² = 25 distinct operators at p = 3 on 8 uniform intervals
+  const quadrature::Gauss rules(4);
+  const fem::Assembler assembler(g, rules);
+  const fem::StiffnessForm stiffness;
+  fem::ElementContext ctx;
+  basis::BasisValues direct;
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    assembler.prepare(e, ctx);
+    space.evaluate(e, ctx.rule->points, 1, direct);
+    EXPECT_LE((ctx.basis.value - direct.value).cwiseAbs().maxCoeff(), 1e-14) << "element " << e;
+    EXPECT_LE((ctx.basis.du - direct.du).cwiseAbs().maxCoeff(), 1e-13) << "element " << e;
+    EXPECT_LE((ctx.basis.dv - direct.dv).cwiseAbs().maxCoeff(), 1e-13) << "element " << e;
+    Eigen::MatrixXd k = Eigen::MatrixXd::Zero(16, 16), sum = Eigen::MatrixXd::Zero(16, 16);
+    stiffness.add(ctx, k);
+    const Eigen::Index q = ctx.num_points();
+    for (Eigen::Index pt = 0; pt < q; ++pt) {
+      for (int i = 0; i < 16; ++i) {
+        for (int j = 0; j < 16; ++j) {
+          sum(i, j) += ctx.weight(pt) * (ctx.grad(i, pt) * ctx.grad(j, pt) + ctx.grad(i, q + pt) * ctx.grad(j, q + pt));
+        }
+      }
+    }
+    EXPECT_LE((k - sum).cwiseAbs().maxCoeff(), 1e-14 * sum.cwiseAbs().maxCoeff()) << "element " << e;
+  }
 }
 
 // Per-element integrals (one value per element, the joint estimators need): on the quarter annulus refined
