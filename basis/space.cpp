@@ -67,4 +67,8 @@ std::vector<InteriorEdge> Space::interior_edges() const {
   throw UnsupportedError("interior edges are not implemented for the '" + name() + "' basis");
 }
 
+void Space::from_reference(Index, const BasisValues& reference, int derivatives, BasisValues& out) const {
+  BasisValues::for_each_block(reference, out, derivatives, [](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) { to = from; });
+}
+
 }  // namespace iga::basis

@@ -88,12 +88,20 @@ class Space {
   /// The rational form of element e when it is a NURBS element (output writes it exactly as a rational Bézier cell);
   /// std::nullopt (the default) for every other element.
   virtual std::optional<RationalForm> rational_form(Index) const { return std::nullopt; }
-  /// The lowest-numbered element whose local functions, in reference coordinates and local order, are those of
-  /// element e (evaluate() gives the same values at any points, up to rounding): e itself, the default, unless the
-  /// backend knows such a twin (every interior element of a uniform B-spline space has the same functions). The
-  /// assembler evaluates a twin class once per rule and reuses the values (issue 17); the values used are always
+  /// Twin classes (issue 17): the lowest-numbered element whose reference values (evaluate_reference()) element e
+  /// derives its local functions from with from_reference(); e itself, the default, unless the backend knows such a
+  /// twin. For the default hooks twins have the same functions in reference coordinates and local order (every
+  /// interior element of a uniform B-spline space); a NURBS space's twins share B-spline values and each applies its
+  /// own weights. The assembler evaluates a class's reference values once per rule and reuses them; they are always
   /// those of the class's lowest element, so results do not depend on the order elements are visited.
   virtual Index reference_element(Index e) const { return e; }
+  /// The values element `twin` (a class's lowest) shares with its class: by default its own functions.
+  virtual void evaluate_reference(Index twin, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
+    evaluate(twin, pts, derivatives, out);
+  }
+  /// Element e's local functions from its class's reference values (the blocks needed for `derivatives`): by
+  /// default a copy.
+  virtual void from_reference(Index e, const BasisValues& reference, int derivatives, BasisValues& out) const;
 };
 
 }  // namespace iga::basis

@@ -134,7 +134,7 @@ void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
 void Assembler::evaluate_basis(Index e, ElementContext& ctx) const {
   const basis::Space& space = geometry_.space();
   const Index twin = space.reference_element(e);
-  if (twin == e) {  // the class's lowest element (or a class of one): evaluated, the same values as the cache's
+  if (twin == e) {  // the class's lowest element (or a class of one): evaluated, from the values the cache holds
     space.evaluate(e, ctx.rule->points, ctx.derivatives, ctx.basis);
     return;
   }
@@ -145,13 +145,12 @@ void Assembler::evaluate_basis(Index e, ElementContext& ctx) const {
     auto it = twins_.find(key);
     if (it == twins_.end()) {
       auto made = std::make_unique<basis::BasisValues>();
-      space.evaluate(twin, ctx.rule->points, ctx.derivatives, *made);
+      space.evaluate_reference(twin, ctx.rule->points, ctx.derivatives, *made);
       it = twins_.emplace(key, std::move(made)).first;
     }
     values = it->second.get();
   }
-  basis::BasisValues::for_each_block(*values, ctx.basis, ctx.derivatives,
-                                     [](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) { to = from; });
+  space.from_reference(e, *values, ctx.derivatives, ctx.basis);
 }
 
 AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,

@@ -65,8 +65,9 @@ class Assembler {
   void prepare(Index e, ElementContext& ctx, int derivatives = 1) const;
 
  private:
-  /// Element e's local functions at its rule's points into ctx.basis: evaluated, or copied from the values of
-  /// its twin class (basis::Space::reference_element), computed once per class, rule and derivative order.
+  /// Element e's local functions at its rule's points into ctx.basis: evaluated, or derived from the reference
+  /// values of its twin class (basis::Space::reference_element, from_reference), computed once per class, rule and
+  /// derivative order.
   void evaluate_basis(Index e, ElementContext& ctx) const;
 
   const basis::Geometry& geometry_;

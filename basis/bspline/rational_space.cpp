@@ -29,27 +29,50 @@ RationalSpace::RationalSpace(std::shared_ptr<const TensorSpace> base, Eigen::Vec
 // and the same with u and v exchanged (differentiate A = R W).
 void RationalSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
   thread_local BasisValues nb;
-  thread_local Eigen::VectorXd w;
   base_->evaluate(e, pts, derivatives, nb);
+  from_reference(e, nb, derivatives, out);
+}
+
+namespace {
+// The quotient rule point by point: W = Σ w_i N_i and its derivatives as dot products of contiguous columns, then
+// R = w∘N / W, R_u = (w∘N_u − W_u R) / W, R_uu = (w∘N_uu − 2 W_u R_u − W_uu R) / W, R_uv = (w∘N_uv − W_v R_u −
+// W_u R_v − W_uv R) / W. N is the number of functions at compile time (bicubic: 16, unrolled) or Eigen::Dynamic.
+template <int N>
+void quotient_rule(const Eigen::VectorXd& weights, const BasisValues& nb, int derivatives, BasisValues& out) {
+  using Column = Eigen::Matrix<double, N, 1>;
+  const Eigen::Index n = weights.size();
+  const Eigen::Map<const Column> w(weights.data(), n);
+  auto in = [&](const Eigen::MatrixXd& block, Eigen::Index k) { return Eigen::Map<const Column>(&block(0, k), n); };
+  auto to = [&](Eigen::MatrixXd& block, Eigen::Index k) { return Eigen::Map<Column>(&block(0, k), n); };
+  for (Eigen::Index k = 0; k < nb.value.cols(); ++k) {
+    const double inv = 1.0 / w.dot(in(nb.value, k));
+    auto r = to(out.value, k);
+    r = inv * w.cwiseProduct(in(nb.value, k));
+    if (derivatives < 1) continue;
+    const double wu = w.dot(in(nb.du, k)), wv = w.dot(in(nb.dv, k));
+    auto ru = to(out.du, k), rv = to(out.dv, k);
+    ru = inv * (w.cwiseProduct(in(nb.du, k)) - wu * r);
+    rv = inv * (w.cwiseProduct(in(nb.dv, k)) - wv * r);
+    if (derivatives < 2) continue;
+    const double wuu = w.dot(in(nb.duu, k)), wuv = w.dot(in(nb.duv, k)), wvv = w.dot(in(nb.dvv, k));
+    to(out.duu, k) = inv * (w.cwiseProduct(in(nb.duu, k)) - 2.0 * wu * ru - wuu * r);
+    to(out.dvv, k) = inv * (w.cwiseProduct(in(nb.dvv, k)) - 2.0 * wv * rv - wvv * r);
+    to(out.duv, k) = inv * (w.cwiseProduct(in(nb.duv, k)) - wv * ru - wu * rv - wuv * r);
+  }
+}
+}  // namespace
+
+void RationalSpace::from_reference(Index e, const BasisValues& nb, int derivatives, BasisValues& out) const {
+  thread_local Eigen::VectorXd w;
   const std::span<const Index> dofs = base_->dofs(e);
   const auto n = static_cast<Eigen::Index>(dofs.size());
-  const Eigen::Index q = pts.cols();
   w.resize(n);
   for (Eigen::Index a = 0; a < n; ++a) w(a) = weights_(dofs[static_cast<std::size_t>(a)]);
-  out.resize(n, q, derivatives);
-  for (Eigen::Index k = 0; k < q; ++k) {
-    const double inv = 1.0 / w.dot(nb.value.col(k));
-    out.value.col(k) = inv * w.cwiseProduct(nb.value.col(k));
-    if (derivatives < 1) continue;
-    const double wu = w.dot(nb.du.col(k)), wv = w.dot(nb.dv.col(k));
-    out.du.col(k) = inv * (w.cwiseProduct(nb.du.col(k)) - wu * out.value.col(k));
-    out.dv.col(k) = inv * (w.cwiseProduct(nb.dv.col(k)) - wv * out.value.col(k));
-    if (derivatives < 2) continue;
-    const double wuu = w.dot(nb.duu.col(k)), wuv = w.dot(nb.duv.col(k)), wvv = w.dot(nb.dvv.col(k));
-    out.duu.col(k) = inv * (w.cwiseProduct(nb.duu.col(k)) - 2.0 * wu * out.du.col(k) - wuu * out.value.col(k));
-    out.dvv.col(k) = inv * (w.cwiseProduct(nb.dvv.col(k)) - 2.0 * wv * out.dv.col(k) - wvv * out.value.col(k));
-    out.duv.col(k) = inv * (w.cwiseProduct(nb.duv.col(k)) - wv * out.du.col(k) - wu * out.dv.col(k) -
-                            wuv * out.value.col(k));
+  out.resize(n, nb.value.cols(), derivatives);
+  if (n == 16) {
+    quotient_rule<16>(w, nb, derivatives, out);
+  } else {
+    quotient_rule<Eigen::Dynamic>(w, nb, derivatives, out);
   }
 }
 

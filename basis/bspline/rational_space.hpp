@@ -31,6 +31,13 @@ class RationalSpace final : public Space {
   std::span<const Index> dofs(Index e) const override { return base_->dofs(e); }
   Index max_local_dofs() const override { return base_->max_local_dofs(); }
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
+  /// The B-spline space's twins: they share B-spline values (evaluate_reference), and each element divides by its
+  /// own weight function (from_reference).
+  Index reference_element(Index e) const override { return base_->reference_element(e); }
+  void evaluate_reference(Index twin, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override {
+    base_->evaluate(twin, pts, derivatives, out);
+  }
+  void from_reference(Index e, const BasisValues& reference, int derivatives, BasisValues& out) const override;
   std::vector<BoundaryEdge> boundary_edges() const override { return base_->boundary_edges(); }
   std::vector<std::string> boundary_part_names() const override { return base_->boundary_part_names(); }
   std::vector<InteriorEdge> interior_edges() const override { return base_->interior_edges(); }

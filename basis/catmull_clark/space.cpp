@@ -142,6 +142,27 @@ void CatmullClarkSpace::build(const std::string& name, IrregularMethod method, I
   }
   build_elements(name, method, domain_faces);
   build_boundary();
+  find_twins();
+}
+
+void CatmullClarkSpace::find_twins() {
+  // Compared against at most 64 distinct operators, so an irregularly numbered net costs O(64) per element and
+  // finds fewer twins. Operators are 0/1 gather matrices times the grid operator: equal means bitwise equal.
+  twin_.resize(elements_.size());
+  std::vector<Index> distinct;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    twin_[e] = static_cast<Index>(e);
+    const Element& el = elements_[e];
+    if (el.kind.family != Family::Regular) continue;
+    for (Index d : distinct) {
+      const Eigen::MatrixXd& other = elements_[static_cast<std::size_t>(d)].regular;
+      if (other.cols() == el.regular.cols() && other == el.regular) {
+        twin_[e] = d;
+        break;
+      }
+    }
+    if (twin_[e] == static_cast<Index>(e) && distinct.size() < 64) distinct.push_back(twin_[e]);
+  }
 }
 
 void CatmullClarkSpace::build_elements(const std::string& name, IrregularMethod method, Index domain_faces) {

@@ -280,6 +280,35 @@ TEST(CatmullClarkSpace, RegularGridMatchesBfr) {
   expect_matches_bfr(space, 200, 2, "regular grid");
 }
 
+// Twins: on an 8 × 8 grid numbered row by row, the 36 faces away from the boundary gather their 16 control points
+// in the same pattern, so they form one class at least; every twin's functions are bit for bit those of its class's
+// lowest element (the same operator applied to the same bicubic values).
+TEST(CatmullClarkSpace, RegularTwinsHaveTheSameFunctions) {
+  std::vector<Eigen::Vector3d> p;
+  std::vector<std::vector<Index>> f;
+  for (int j = 0; j <= 8; ++j) {
+    for (int i = 0; i <= 8; ++i) p.emplace_back(i, j + 0.1 * std::sin(i), 0.0);
+  }
+  for (int j = 0; j < 8; ++j) {
+    for (int i = 0; i < 8; ++i) f.push_back({i + 9 * j, i + 1 + 9 * j, i + 1 + 9 * (j + 1), i + 9 * (j + 1)});
+  }
+  const CatmullClarkSpace space(PolyMesh::build(p, f));
+  Eigen::Matrix2Xd pts(2, 5);
+  pts << 0.1, 0.9, 0.5, 0.3, 0.7, 0.2, 0.4, 0.5, 0.95, 0.05;
+  Index twins = 0;
+  BasisValues a, b;
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    const Index twin = space.reference_element(e);
+    ASSERT_LE(twin, e);
+    twins += twin != e;
+    space.evaluate(e, pts, 2, a);
+    space.evaluate(twin, pts, 2, b);
+    EXPECT_TRUE(a.value == b.value && a.du == b.du && a.dv == b.dv && a.duu == b.duu && a.duv == b.duv &&
+                a.dvv == b.dvv) << "element " << e << ", twin " << twin;
+  }
+  EXPECT_GE(twins, 35);
+}
+
 TEST(CatmullClarkSpace, InteriorEvMatchesBfr) {
   for (int n = 3; n <= 8; ++n) {
     if (n == 4) continue;

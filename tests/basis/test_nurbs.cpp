@@ -115,6 +115,33 @@ TEST(Nurbs, RationalBasisMatchesItsDefinition) {
 
 // Every point of the inner and outer arcs at distance r_inner and r_outer from the origin (1e-14), for every
 // degree and after refinement; the corners where they should be.
+// Twin classes of a NURBS space are its B-spline space's; each element applies its own weights to the shared
+// B-spline values (from_reference), which gives its own rational functions (to rounding, against evaluate()).
+TEST(Nurbs, TwinsShareBsplineValuesAndKeepTheirWeights) {
+  const basis::Geometry g = refine::refine_uniform(make_quarter_annulus(3), 3).geometry;  // 8 × 8 intervals
+  const basis::Space& space = g.space();
+  const RationalSpace* r = rational_space(space);
+  ASSERT_NE(r, nullptr);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  Eigen::Matrix2Xd pts(2, 7);
+  for (Index k = 0; k < pts.cols(); ++k) pts.col(k) << u01(rng), u01(rng);
+  Index twins = 0;
+  basis::BasisValues reference, derived, direct;
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    const Index twin = space.reference_element(e);
+    EXPECT_EQ(twin, r->base().reference_element(e));
+    twins += twin != e;
+    space.evaluate_reference(twin, pts, 2, reference);
+    space.from_reference(e, reference, 2, derived);
+    space.evaluate(e, pts, 2, direct);
+    EXPECT_LE((derived.value - direct.value).cwiseAbs().maxCoeff(), 1e-14) << "element " << e;
+    EXPECT_LE((derived.du - direct.du).cwiseAbs().maxCoeff(), 1e-12) << "element " << e;
+    EXPECT_LE((derived.duv - direct.duv).cwiseAbs().maxCoeff(), 1e-11) << "element " << e;
+  }
+  EXPECT_EQ(twins, 64 - 25);  // (2p − 1)² distinct B-spline operators at p = 3
+}
+
 TEST(Nurbs, QuarterAnnulusArcsAreCircles) {
   for (int p = 2; p <= 5; ++p) {
     for (int steps : {0, 2}) {
