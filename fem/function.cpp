@@ -9,12 +9,13 @@ namespace iga::fem {
 namespace {
 // Fourth-order central difference of f at the columns of x with step h per coordinate:
 // f'(x) ≈ (f(x-2h) - 8 f(x-h) + 8 f(x+h) - f(x+2h)) / (12 h).
-void central_difference(const Function& f, const Eigen::Matrix3Xd& x, double h, Eigen::Matrix3Xd& out) {
+void central_difference(const Function& f, const Eigen::Matrix3Xd& x, double h, Eigen::Matrix3Xd& out,
+                        int components = 3) {
   const Eigen::Index q = x.cols();
-  out.resize(3, q);
-  Eigen::Matrix3Xd shifted(3, q);
+  out.setZero(3, q);
+  Eigen::Matrix3Xd shifted(3, q);  // not thread_local: values() may be a user's, and may difference too
   Eigen::VectorXd fm2, fm1, fp1, fp2;
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < components; ++c) {
     shifted = x;
     shifted.row(c).array() -= 2 * h;
     f.values(shifted, fm2);
@@ -28,6 +29,23 @@ void central_difference(const Function& f, const Eigen::Matrix3Xd& x, double h, 
   }
 }
 }  // namespace
+
+void Function::partial_gradients(const Eigen::Matrix3Xd& x, int components, Eigen::Matrix3Xd& out) const {
+  if (components < 1 || components > 3) {
+    throw InputError("partial_gradients: components must be 1, 2 or 3, got " + std::to_string(components));
+  }
+  if (exact_gradient() || components == 3) {
+    gradients(x, out);
+    out.bottomRows(3 - components).setZero();
+    return;
+  }
+  try {
+    central_difference(*this, x, fd_step_, out, components);
+  } catch (const InputError&) {
+    gradients(x, out);  // near the edge of the function's domain: point by point with shrinking steps
+    out.bottomRows(3 - components).setZero();
+  }
+}
 
 void Function::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const {
   try {

@@ -17,6 +17,10 @@ class Function {
   /// out.col(k) = grad u(x.col(k)) (3 × q). The default is a fourth-order central difference with step
   /// fd_step() in each coordinate; override when the gradient is known in closed form.
   virtual void gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const;
+  /// The first `components` (1..3) entries of gradients(), the rest 0: a planar domain's in-plane gradient is
+  /// components = 2. When exact_gradient() is false (the finite difference) only those coordinates are differenced,
+  /// a third fewer evaluations in the plane; otherwise gradients() is called and the rest zeroed.
+  void partial_gradients(const Eigen::Matrix3Xd& x, int components, Eigen::Matrix3Xd& out) const;
   /// True when gradients() is exact (closed form), false when it is a finite difference.
   virtual bool exact_gradient() const { return false; }
   /// Step of the default finite-difference gradient (physical units); 1e-3 suits domains of size ~1, and

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "fem/expression.hpp"
+#include "fem/function.hpp"
 
 using namespace iga;
 
@@ -38,6 +39,24 @@ TEST(Expression, NormalVariablesAndFiniteDifferenceGradient) {
   EXPECT_NEAR(g(0, 0), 3 * 4 - 2 * 9, 1e-9);
   EXPECT_NEAR(g(1, 0), -4 * 2 * 3, 1e-9);
   EXPECT_NEAR(g(2, 0), 1, 1e-9);
+  // The in-plane gradient (error norms on planar domains): the same differences in x and y, z left 0; and for a
+  // closed-form gradient the closed form with z zeroed. Bad component counts are refused.
+  Eigen::Matrix3Xd p;
+  c.partial_gradients(x, 2, p);
+  EXPECT_EQ(p(0, 0), g(0, 0));
+  EXPECT_EQ(p(1, 0), g(1, 0));
+  EXPECT_EQ(p(2, 0), 0.0);
+  const auto closed = fem::make_function([](const Eigen::Vector3d& y) { return y(0) * y(1) * y(2); },
+                                         [](const Eigen::Vector3d& y) {
+                                           return Eigen::Vector3d(y(1) * y(2), y(0) * y(2), y(0) * y(1));
+                                         });
+  x(2, 0) = 5;
+  closed->partial_gradients(x, 1, p);
+  EXPECT_EQ(p(0, 0), 15.0);
+  EXPECT_EQ(p(1, 0), 0.0);
+  EXPECT_EQ(p(2, 0), 0.0);
+  EXPECT_THROW(c.partial_gradients(x, 0, p), InputError);
+  EXPECT_THROW(c.partial_gradients(x, 4, p), InputError);
 }
 
 TEST(Expression, ErrorsNameTheOption) {
