@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 #include "basis/registry.hpp"
 #include "benchmarks/study.hpp"
@@ -17,6 +18,7 @@
 #include "fem/convergence.hpp"
 #include "fem/expression.hpp"
 #include "fem/memory.hpp"
+#include "fem/parallel.hpp"
 #include "fem/poisson.hpp"
 #include "fem/problems.hpp"
 #include "fem/threads.hpp"
@@ -36,6 +38,7 @@ namespace {
 
 struct Options {
   std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
+  std::string petsc_options;
   std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
   std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu, cc_boundary = "natural", cc_enrich = "none";
   int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
@@ -322,8 +325,15 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["domain_measure"] = r.domain_measure;
   j["threads"] = iga::fem::num_threads();
   j["pattern_seconds"] = r.pattern_seconds;
-  j["assembly_seconds"] = r.assembly_seconds;
+  // A distributed run's phases end when the slowest rank's do.
+  j["assembly_seconds"] = iga::fem::max_over_ranks(r.assembly_seconds);
   j["solve_seconds"] = r.solve_seconds;
+  j["ranks"] = r.ranks;
+  if (r.ranks > 1 || !r.elements_per_rank.empty()) {
+    j["elements_per_rank"] = r.elements_per_rank;
+    j["dofs_per_rank"] = r.dofs_per_rank;
+  }
+  if (!solver.petsc_options.empty()) j["petsc_options"] = solver.petsc_options;
   j["solver"] = r.solver;
   j["solver_iterations"] = r.solver_iterations;
   j["solver_ordering"] = r.solver_ordering;
@@ -381,7 +391,12 @@ nlohmann::json solve_run(const Options& o) {
   std::string problem_name;
   const fem::PoissonProblem problem = make_problem(o, geometry, problem_name);
   const std::unique_ptr<quadrature::RuleProvider> rules = make_rules(o, s);
-  const fem::SolverOptions solver{fem::parse_solver(o.solver)};
+  fem::SolverOptions solver;
+  solver.kind = fem::parse_solver(o.solver);
+  solver.petsc_options = o.petsc_options;
+  if (!o.petsc_options.empty() && solver.kind != fem::SolverKind::Petsc) {
+    throw InputError("--petsc-options: only with --solver petsc");
+  }
 
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
       std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
@@ -405,15 +420,17 @@ nlohmann::json solve_run(const Options& o) {
   if (r.errors) log("L2 error " + fmt(r.errors->l2) + ", H1 seminorm error " + fmt(r.errors->h1));
   if (s.write_vtu) j["vtu_output"] = vtu_output.settings();
   if (s.write_vtu && o.adaptive < 0) {
+    // A distributed run: each rank writes the cells of its own elements, rank 0 the .pvtu that names them.
+    if (r.ranks > 1) vtu_output.pieces = {fem::rank(), r.ranks, r.element_owner};
     const std::vector<std::string> files =
         progress.phase("output", [&] { return io::write_output(o.vtu, geometry, &r.u, vtu_output); });
-    j["vtu"] = o.vtu;
+    j["vtu"] = files[0];
     if (files.size() > 1) j["vtu_outline"] = files[1];
     for (const std::string& f : files) log("wrote " + f);
   } else if (s.write_vtu) {
     log("wrote " + j["adaptive"]["pvd"].get<std::string>() + " and its " + std::to_string(j["adaptive"]["history"].size()) + " .vtu files");
   }
-  if (io::writes(o.net_vtu)) {
+  if (io::writes(o.net_vtu) && fem::rank() == 0) {
     io::write_control_net_vtu(o.net_vtu, last ? *last : geometry, s.net ? &*s.net : nullptr);
     j["net_vtu"] = o.net_vtu;
     log("wrote " + o.net_vtu);
@@ -426,7 +443,7 @@ nlohmann::json solve_run(const Options& o) {
 
 int run(const Options& o) {
   const nlohmann::json j = solve_run(o);
-  if (!o.json.empty() && o.json != "none") {
+  if (!o.json.empty() && o.json != "none" && iga::fem::rank() == 0) {
     iga::io::write_json(o.json, j);
     make_log(o)("wrote " + o.json);
   }
@@ -512,7 +529,8 @@ int main(int argc, char** argv) {
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms")->check(iga::io::non_blank());
   app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(iga::io::finite_number(0))->capture_default_str();
   app.add_option("--quadrature", o.quadrature, "quadrature rule: gauss:P (P points per direction) or tiles:P:L (P×P Gauss on each tile of levels 1..L of elements at extraordinary vertices); default gauss:degree+1");
-  app.add_option("--solver", o.solver, "cholmod or cg")->capture_default_str();
+  app.add_option("--solver", o.solver, "cholmod, cg (Eigen, incomplete Cholesky), or petsc (a PETSc KSP, CG + GAMG by default, on the ranks of mpirun: each assembles its own part of a METIS partition)")->capture_default_str();
+  app.add_option("--petsc-options", o.petsc_options, "--solver petsc: PETSc options, e.g. '-pc_type hypre' or '-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps' (the PETSC_OPTIONS environment is read too)")->check(iga::io::non_blank());
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();
   app.add_option("--vtu-samples", o.samples, "--vtu-format linear: sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
@@ -546,5 +564,24 @@ int main(int argc, char** argv) {
   }
   o.vtu_given = app.count("--vtu") > 0;
   o.json_given = app.count("--json") > 0;
-  return iga::io::run_program("iga-poisson", [&] { return o.study.empty() ? run(o) : study(o); });
+  return iga::io::run_program("iga-poisson", [&] {
+    // --solver petsc: PETSc on the ranks of mpirun (one without it). PETSc reads no command-line option of its
+    // own (they come through --petsc-options and PETSC_OPTIONS); the other ranks stay silent, errors included.
+    std::optional<iga::fem::ParallelSession> session;
+    if (o.solver == "petsc") {
+      int args = 1;
+      session.emplace(args, argv);
+      if (iga::fem::rank() > 0) {
+        o.quiet = true;
+        std::cerr.setstate(std::ios::failbit);
+      }
+      const int ranks = iga::fem::ranks();
+      if (ranks > 1 && (o.adaptive >= 0 || !o.study.empty())) {
+        throw iga::UnsupportedError(std::string(o.adaptive >= 0 ? "--adaptive" : "--study") +
+                                    " with --solver petsc on more than one rank: not supported yet (run it on one rank)");
+      }
+      if (ranks > 1 && o.threads == 0) o.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / ranks);
+    }
+    return o.study.empty() ? run(o) : study(o);
+  });
 }

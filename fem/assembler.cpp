@@ -90,11 +90,12 @@ void prepare_second_derivatives(ElementContext& ctx) {
 Assembler::Assembler(const basis::Geometry& geometry, const quadrature::RuleProvider& rules)
     : geometry_(geometry), rules_(rules) {}
 
-const AssemblyPlan& Assembler::plan() const {
-  if (!plan_) {
+const AssemblyPlan& Assembler::plan(bool with_pattern) const {
+  const bool pattern_missing = plan_ && with_pattern && plan_->pattern.rows() != geometry_.space().num_dofs();
+  if (!plan_ || pattern_missing) {
     // Swap, not move: Eigen 3.4's SparseMatrix has no move constructor and would be copied.
-    AssemblyPlan made = make_assembly_plan(geometry_.space());
-    plan_ = std::make_unique<AssemblyPlan>();
+    AssemblyPlan made = make_assembly_plan(geometry_.space(), with_pattern);
+    if (!plan_) plan_ = std::make_unique<AssemblyPlan>();
     plan_->pattern.swap(made.pattern);
     plan_->colors.swap(made.colors);
     plan_->dense.swap(made.dense);
@@ -156,29 +157,30 @@ void Assembler::evaluate_basis(Index e, ElementContext& ctx) const {
 AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
                                   std::span<const LinearForm* const> linear, Eigen::SparseMatrix<double>& a,
                                   Eigen::VectorXd& b) const {
-  const AssemblyPlan& p = plan();
+  CscSink sink(plan(), a, b);
+  return assemble(bilinear, linear, sink);
+}
+
+AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
+                                  std::span<const LinearForm* const> linear, SystemSink& sink) const {
+  const AssemblyPlan& p = plan(false);
   const basis::Space& space = geometry_.space();
-  a = p.pattern;
-  b = Eigen::VectorXd::Zero(space.num_dofs());
-  const int* outer = a.outerIndexPtr();
-  const int* inner = a.innerIndexPtr();
-  double* values = a.valuePtr();
   const Index ne = space.num_elements();
   std::vector<double> measure(static_cast<std::size_t>(ne), 0.0);
   std::vector<Index> points(static_cast<std::size_t>(ne), 0);
   std::vector<ElementContext> contexts(static_cast<std::size_t>(omp_get_max_threads()));
   std::vector<Eigen::MatrixXd> mats(contexts.size());
   std::vector<Eigen::VectorXd> vecs(contexts.size());
-  std::vector<std::vector<Index>> orders(contexts.size());
-  // Entries between two dense dofs and their loads (AssemblyPlan::dense), per element of the colour: value
-  // positions (the load of dof j as −1 − j) and values, added after the colour in element order.
-  std::vector<std::vector<std::pair<std::ptrdiff_t, double>>> pending;
+  std::vector<Index> taken;
   for (const std::vector<Index>& colour : p.colors) {
-    if (pending.size() < colour.size()) pending.resize(colour.size());
-    parallel_for(static_cast<Index>(colour.size()), [&](Index i) {
+    taken.clear();
+    for (Index e : colour) {
+      if (sink.takes(e)) taken.push_back(e);
+    }
+    parallel_for(static_cast<Index>(taken.size()), [&](Index i) {
       const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
       ElementContext& ctx = contexts[t];
-      const Index e = colour[static_cast<std::size_t>(i)];
+      const Index e = taken[static_cast<std::size_t>(i)];
       prepare(e, ctx);
       const auto dofs = space.dofs(e);
       const Index nloc = static_cast<Index>(dofs.size());
@@ -190,48 +192,9 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
       for (const LinearForm* form : linear) form->add(ctx, f);
       measure[static_cast<std::size_t>(e)] = ctx.weight.sum();
       points[static_cast<std::size_t>(e)] = ctx.rule->size();
-      // Scatter: no other element of this colour touches these rows or columns. Rows are visited in
-      // ascending dof order, so each column is one forward walk through its sorted row indices.
-      std::vector<Index>& order = orders[t];
-      order.resize(static_cast<std::size_t>(nloc));
-      for (Index al = 0; al < nloc; ++al) order[static_cast<std::size_t>(al)] = al;
-      if (!std::is_sorted(dofs.begin(), dofs.end())) {
-        std::sort(order.begin(), order.end(), [&](Index x, Index y) { return dofs[x] < dofs[y]; });
-      }
-      const int first_row = static_cast<int>(dofs[order[0]]);
-      std::vector<std::pair<std::ptrdiff_t, double>>& later = pending[static_cast<std::size_t>(i)];
-      later.clear();
-      const bool any_dense =
-          std::any_of(dofs.begin(), dofs.end(), [&](Index d) { return p.dense[static_cast<std::size_t>(d)] != 0; });
-      for (Index bl = 0; bl < nloc; ++bl) {
-        const Index j = dofs[bl];
-        const bool dense_column = any_dense && p.dense[static_cast<std::size_t>(j)];
-        const int* pos = std::lower_bound(inner + outer[j], inner + outer[j + 1], first_row);
-        for (Index al : order) {
-          const int row = static_cast<int>(dofs[al]);
-          while (*pos < row) ++pos;
-          if (dense_column && p.dense[static_cast<std::size_t>(row)]) {
-            later.emplace_back(pos - inner, k(al, bl));
-          } else {
-            values[pos - inner] += k(al, bl);
-          }
-        }
-        if (dense_column) {
-          later.emplace_back(-1 - static_cast<std::ptrdiff_t>(j), f(bl));
-        } else {
-          b(j) += f(bl);
-        }
-      }
+      sink.add(i, dofs, k, f);
     });
-    for (std::size_t i = 0; i < colour.size(); ++i) {
-      for (const auto& [at, v] : pending[i]) {
-        if (at >= 0) {
-          values[at] += v;
-        } else {
-          b(-1 - at) += v;
-        }
-      }
-    }
+    sink.end_colour(static_cast<Index>(taken.size()));
   }
   AssemblyStats stats;
   for (Index e = 0; e < ne; ++e) {
@@ -303,11 +266,13 @@ void Assembler::prepare_side(Index e, int side, double t0, double t1, const quad
 }
 
 Eigen::MatrixXd Assembler::integrate_per_element(
-    int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f, int derivatives) const {
+    int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f, int derivatives,
+    const std::vector<char>* only) const {
   const Index ne = geometry_.space().num_elements();
   Eigen::MatrixXd partial = Eigen::MatrixXd::Zero(n, ne);
   std::vector<ElementContext> contexts(static_cast<std::size_t>(omp_get_max_threads()));
   parallel_for(ne, [&](Index e) {
+    if (only && !(*only)[static_cast<std::size_t>(e)]) return;
     ElementContext& ctx = contexts[static_cast<std::size_t>(omp_get_thread_num())];
     prepare(e, ctx, derivatives);
     f(ctx, partial.col(e));
@@ -317,8 +282,8 @@ Eigen::MatrixXd Assembler::integrate_per_element(
 
 Eigen::VectorXd Assembler::integrate(int n,
                                      const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f,
-                                     int derivatives) const {
-  const Eigen::MatrixXd partial = integrate_per_element(n, f, derivatives);
+                                     int derivatives, const std::vector<char>* only) const {
+  const Eigen::MatrixXd partial = integrate_per_element(n, f, derivatives, only);
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(n);
   for (Index e = 0; e < partial.cols(); ++e) sum += partial.col(e);
   return sum;

@@ -14,6 +14,7 @@
 #include "basis/geometry.hpp"
 #include "fem/assembly_plan.hpp"
 #include "fem/forms.hpp"
+#include "fem/system_sink.hpp"
 #include "quadrature/rule_provider.hpp"
 
 namespace iga::fem {
@@ -30,12 +31,18 @@ class Assembler {
 
   const basis::Geometry& geometry() const { return geometry_; }
   const quadrature::RuleProvider& rules() const { return rules_; }
-  const AssemblyPlan& plan() const;
+  /// with_pattern = false: the colouring alone (the pattern stays 0 × 0 until a call asks for it), for a sink
+  /// with its own pattern.
+  const AssemblyPlan& plan(bool with_pattern = true) const;
 
   /// A = sum of the bilinear forms, b = sum of the linear forms, in one loop over the elements.
   /// A gets the plan's pattern; b has num_dofs entries. Deterministic for any thread count.
   AssemblyStats assemble(std::span<const BilinearForm* const> bilinear, std::span<const LinearForm* const> linear,
                          Eigen::SparseMatrix<double>& a, Eigen::VectorXd& b) const;
+  /// The same loop over the elements the sink takes (SystemSink::takes), written through the sink: colour by
+  /// colour, the elements of a colour in parallel. Stats cover the elements taken.
+  AssemblyStats assemble(std::span<const BilinearForm* const> bilinear, std::span<const LinearForm* const> linear,
+                         SystemSink& sink) const;
 
   /// Boundary integrals over `edges` (serial; boundaries are small): a (num_dofs², may be null) and
   /// b (num_dofs, may be null) are overwritten.
@@ -47,12 +54,14 @@ class Assembler {
   /// n × num_elements matrix, column e for element e (deal.II's per-cell vectors: error indicators,
   /// estimators). Computed in parallel; each column by one call, so the result does not depend on the threads.
   /// derivatives: what prepare() evaluates (2: second derivatives through the map as well).
+  /// only (optional, one entry per element): the elements e with only[e] != 0, the other columns zero (a
+  /// distributed run's own elements).
   Eigen::MatrixXd integrate_per_element(int n,
                                         const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f,
-                                        int derivatives = 1) const;
+                                        int derivatives = 1, const std::vector<char>* only = nullptr) const;
   /// Their sum over elements, reduced in element order (reproducible). For error norms and measures.
   Eigen::VectorXd integrate(int n, const std::function<void(const ElementContext&, Eigen::Ref<Eigen::VectorXd>)>& f,
-                            int derivatives = 1) const;
+                            int derivatives = 1, const std::vector<char>* only = nullptr) const;
 
   /// Fills ctx on the piece [t0, t1] of side `side` of element e (side parameter, side_point conventions) at the
   /// points s of `line` on [0, 1] (side parameter t0 + s (t1 - t0)): basis with first derivatives, geometry

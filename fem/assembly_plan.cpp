@@ -7,26 +7,13 @@
 
 namespace iga::fem {
 
-AssemblyPlan make_assembly_plan(const basis::Space& space) {
+namespace {
+
+// The columns of each dof: the union of the dofs of the elements around it. Two passes (count, then fill in
+// place) with a per-thread stamp array, so nothing is allocated per column.
+void fill_pattern(const basis::Space& space, const std::vector<Index>& start, const std::vector<Index>& elems,
+                  Eigen::SparseMatrix<double>& a) {
   const Index n = space.num_dofs();
-  const Index ne = space.num_elements();
-  // dof -> elements (CSR).
-  std::vector<Index> start(static_cast<std::size_t>(n + 1), 0);
-  for (Index e = 0; e < ne; ++e) {
-    for (Index d : space.dofs(e)) ++start[static_cast<std::size_t>(d + 1)];
-  }
-  for (Index i = 0; i < n; ++i) start[i + 1] += start[i];
-  std::vector<Index> elems(static_cast<std::size_t>(start[n]));
-  {
-    std::vector<Index> pos(start.begin(), start.end() - 1);
-    for (Index e = 0; e < ne; ++e) {
-      for (Index d : space.dofs(e)) elems[static_cast<std::size_t>(pos[d]++)] = e;
-    }
-  }
-  // Columns: the union of the dofs of the elements around each dof. Two passes (count, then fill in
-  // place) with a per-thread stamp array, so nothing is allocated per column.
-  AssemblyPlan plan;
-  Eigen::SparseMatrix<double>& a = plan.pattern;
   a.resize(n, n);
   std::vector<Index> count(static_cast<std::size_t>(n), 0);
   auto for_each_neighbour = [&](Index j, std::vector<Index>& stamp, auto&& visit) {
@@ -66,7 +53,12 @@ AssemblyPlan make_assembly_plan(const basis::Space& space) {
     }
   }
   std::fill(a.valuePtr(), a.valuePtr() + nnz, 0.0);
+}
 
+void colour(const basis::Space& space, const std::vector<Index>& start, const std::vector<Index>& elems,
+            AssemblyPlan& plan) {
+  const Index n = space.num_dofs();
+  const Index ne = space.num_elements();
   // Greedy colouring: an element takes the smallest colour no element sharing a (non-dense) dof with it has.
   plan.dense.assign(static_cast<std::size_t>(n), 0);
   for (Index d = 0; d < n; ++d) plan.dense[static_cast<std::size_t>(d)] = start[d + 1] - start[d] > kDenseDofElements;
@@ -90,6 +82,29 @@ AssemblyPlan make_assembly_plan(const basis::Space& space) {
     if (static_cast<std::size_t>(c) >= plan.colors.size()) plan.colors.resize(static_cast<std::size_t>(c) + 1);
     plan.colors[static_cast<std::size_t>(c)].push_back(e);
   }
+}
+
+}  // namespace
+
+AssemblyPlan make_assembly_plan(const basis::Space& space, bool with_pattern) {
+  const Index n = space.num_dofs();
+  const Index ne = space.num_elements();
+  // dof -> elements (CSR).
+  std::vector<Index> start(static_cast<std::size_t>(n + 1), 0);
+  for (Index e = 0; e < ne; ++e) {
+    for (Index d : space.dofs(e)) ++start[static_cast<std::size_t>(d + 1)];
+  }
+  for (Index i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<Index> elems(static_cast<std::size_t>(start[n]));
+  {
+    std::vector<Index> pos(start.begin(), start.end() - 1);
+    for (Index e = 0; e < ne; ++e) {
+      for (Index d : space.dofs(e)) elems[static_cast<std::size_t>(pos[d]++)] = e;
+    }
+  }
+  AssemblyPlan plan;
+  if (with_pattern) fill_pattern(space, start, elems, plan.pattern);
+  colour(space, start, elems, plan);
   return plan;
 }
 

@@ -26,6 +26,8 @@ struct AssemblyPlan {
 /// (p+1)² elements (16 bicubic, 36 quintic; hierarchical spaces a few more).
 inline constexpr Index kDenseDofElements = 256;
 
-AssemblyPlan make_assembly_plan(const basis::Space& space);
+/// with_pattern = false: the colouring and dense dofs only (pattern 0 × 0), for a sink that keeps its own
+/// pattern (a distributed matrix: then no process holds the whole pattern).
+AssemblyPlan make_assembly_plan(const basis::Space& space, bool with_pattern = true);
 
 }  // namespace iga::fem

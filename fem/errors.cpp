@@ -5,8 +5,17 @@
 namespace iga::fem {
 
 ErrorNorms compute_errors(const Assembler& assembler, const Eigen::VectorXd& u, const Function& exact) {
+  return error_norms(error_squares(assembler, u, exact));
+}
+
+ErrorNorms error_norms(const Eigen::Vector4d& sums) {
+  return {std::sqrt(sums(0)), std::sqrt(sums(1)), std::sqrt(sums(2)), std::sqrt(sums(3))};
+}
+
+Eigen::Vector4d error_squares(const Assembler& assembler, const Eigen::VectorXd& u, const Function& exact,
+                              const std::vector<char>* only) {
   const basis::Space& space = assembler.geometry().space();
-  const Eigen::VectorXd sums = assembler.integrate(4, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+  return assembler.integrate(4, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
     const auto dofs = space.dofs(ctx.element);
     thread_local Eigen::VectorXd local, uh, ue;
     thread_local Eigen::Matrix3Xd gh, ge;
@@ -27,8 +36,7 @@ ErrorNorms compute_errors(const Assembler& assembler, const Eigen::VectorXd& u, 
     out(1) = ((ge - gh).colwise().squaredNorm().transpose().array() * ctx.weight.array()).sum();
     out(2) = (ue.array().square() * ctx.weight.array()).sum();
     out(3) = (ge.colwise().squaredNorm().transpose().array() * ctx.weight.array()).sum();
-  });
-  return {std::sqrt(sums(0)), std::sqrt(sums(1)), std::sqrt(sums(2)), std::sqrt(sums(3))};
+  }, 1, only);
 }
 
 }  // namespace iga::fem

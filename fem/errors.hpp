@@ -18,4 +18,10 @@ struct ErrorNorms {
 /// plane (for surfaces; for planar domains this drops the z component).
 ErrorNorms compute_errors(const Assembler& assembler, const Eigen::VectorXd& u, const Function& exact);
 
+/// The squares behind compute_errors (‖u − u_h‖², |u − u_h|²_1, ‖u‖², |u|²_1) over the elements e with
+/// only[e] != 0 (all when only is null): a distributed run sums its ranks' parts before the square roots.
+Eigen::Vector4d error_squares(const Assembler& assembler, const Eigen::VectorXd& u, const Function& exact,
+                              const std::vector<char>* only = nullptr);
+ErrorNorms error_norms(const Eigen::Vector4d& squares);
+
 }  // namespace iga::fem

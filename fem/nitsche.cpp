@@ -68,9 +68,9 @@ std::vector<double> nitsche_penalties(const Assembler& assembler, std::span<cons
   return out;
 }
 
-double add_nitsche_terms(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
-                         const std::shared_ptr<const Function>& g, double gamma, Eigen::SparseMatrix<double>& a,
-                         Eigen::VectorXd& b) {
+double nitsche_terms(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
+                     const std::shared_ptr<const Function>& g, double gamma, Eigen::SparseMatrix<double>& a,
+                     Eigen::VectorXd& b) {
   std::vector<double> beta;
   NitschePenalty penalty;
   double used = gamma;
@@ -82,12 +82,7 @@ double add_nitsche_terms(const Assembler& assembler, std::span<const basis::Boun
   }
   const NitscheForm form(penalty);
   const NitscheLoadForm load(g, penalty);
-  Eigen::SparseMatrix<double> an;
-  Eigen::VectorXd bn;
-  assembler.assemble_boundary(edges, &form, &load, &an, &bn);
-  a += an;
-  a.makeCompressed();
-  b += bn;
+  assembler.assemble_boundary(edges, &form, &load, &a, &b);
   return used;
 }
 

@@ -21,10 +21,11 @@ namespace iga::fem {
 std::vector<double> nitsche_penalties(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
                                       double* equivalent_gamma = nullptr);
 
-/// Adds Nitsche's terms for u = g on `edges` to the system (a, b): β = γ / h per side when gamma > 0, else the
-/// local estimate above. Returns the γ used (or max_K β_K h_K), for the report.
-double add_nitsche_terms(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
-                         const std::shared_ptr<const Function>& g, double gamma, Eigen::SparseMatrix<double>& a,
-                         Eigen::VectorXd& b);
+/// Nitsche's terms for u = g on `edges`, to be added to the system: a (num_dofs²) and b (num_dofs) are overwritten.
+/// β = γ / h per side when gamma > 0, else the local estimate above. Returns the γ used (or max_K β_K h_K), for
+/// the report.
+double nitsche_terms(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
+                     const std::shared_ptr<const Function>& g, double gamma, Eigen::SparseMatrix<double>& a,
+                     Eigen::VectorXd& b);
 
 }  // namespace iga::fem

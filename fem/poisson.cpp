@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "fem/assembler.hpp"
 #include "fem/dirichlet.hpp"
+#include "fem/linear_system.hpp"
 #include "fem/nitsche.hpp"
 
 namespace iga::fem {
@@ -24,7 +25,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 struct PoissonSolver::Systems {
   std::unique_ptr<Assembler> assembler;
   DirichletConditions bc;
-  ReducedSystem reduced;
+  std::unique_ptr<LinearSystem> system;
   Eigen::VectorXd ones_load;  // m_i = ∫ φ_i, for the mean-zero constraint
   std::chrono::steady_clock::time_point t0;
 };
@@ -139,7 +140,7 @@ void PoissonSolver::setup() {
   r_.dirichlet_edges = static_cast<Index>(dirichlet_edges_.size());
   sys_->t0 = std::chrono::steady_clock::now();
   sys_->assembler = std::make_unique<Assembler>(geometry_, rules_);
-  sys_->assembler->plan();
+  sys_->system = make_linear_system(*sys_->assembler, solver_);  // its pattern and the colouring
   r_.pattern_seconds = seconds_since(sys_->t0);
   done_ = 1;
 }
@@ -159,23 +160,28 @@ void PoissonSolver::assemble() {
     source = std::make_unique<SourceForm>(problem.source);
     linear.push_back(source.get());
   }
-  Eigen::SparseMatrix<double> a;
-  Eigen::VectorXd b;
-  const AssemblyStats stats = assembler.assemble(bilinear, linear, a, b);
-  r_.domain_measure = stats.measure;
-  r_.quadrature_points = stats.quadrature_points;
+  LinearSystem& system = *sys_->system;
+  const AssemblyStats stats = assembler.assemble(bilinear, linear, system.sink());
+  const AssemblyStats total = system.total(stats);  // a distributed system's ranks each took their own elements
+  r_.domain_measure = total.measure;
+  r_.quadrature_points = total.quadrature_points;
 
+  // Boundary terms are small: every process computes them, and each adds the rows it owns.
+  const Eigen::SparseMatrix<double> none;
   if (!neumann_edges_.empty()) {
     Eigen::VectorXd bn;
     const BoundaryLoadForm flux(problem.neumann);
     assembler.assemble_boundary(neumann_edges_, nullptr, &flux, nullptr, &bn);
-    b += bn;
+    system.add(none, bn);
   }
   DirichletConditions& bc = sys_->bc;
   const std::shared_ptr<const Function> g = problem.dirichlet ? problem.dirichlet : constant_function(0.0);
   if (problem.dirichlet_method == DirichletMethod::kNitsche) {
     if (!dirichlet_edges_.empty()) {
-      r_.nitsche_penalty = add_nitsche_terms(assembler, dirichlet_edges_, g, problem.nitsche_penalty, a, b);
+      Eigen::SparseMatrix<double> an;
+      Eigen::VectorXd bn;
+      r_.nitsche_penalty = nitsche_terms(assembler, dirichlet_edges_, g, problem.nitsche_penalty, an, bn);
+      system.add(an, bn);
     }
     bc = DirichletConditions{};
   } else {
@@ -189,14 +195,12 @@ void PoissonSolver::assemble() {
     const std::vector<const LinearForm*> lf{&one};
     assembler.assemble({}, lf, unused, sys_->ones_load);
     r_.mean_zero = true;
-    r_.compatibility_defect = b.sum();
-    b -= (r_.compatibility_defect / r_.domain_measure) * sys_->ones_load;
+    r_.compatibility_defect = system.load_sum();
+    system.add(none, (-r_.compatibility_defect / r_.domain_measure) * sys_->ones_load);
     bc.dofs = {0};
     bc.values = Eigen::VectorXd::Zero(1);
   }
   r_.dirichlet_dofs = static_cast<Index>(bc.dofs.size());
-  sys_->reduced = eliminate(a, b, bc);
-  r_.free_dofs = static_cast<Index>(sys_->reduced.free.size());
   r_.assembly_seconds = seconds_since(sys_->t0);
   done_ = 2;
 }
@@ -206,7 +210,7 @@ void PoissonSolver::solve() {
   assemble();
   SolveResult s;
   try {
-    s = fem::solve(sys_->reduced.a, sys_->reduced.b, solver_);
+    s = sys_->system->solve(sys_->bc);
   } catch (const NumericalError& e) {
     // Only a fixed γ can be too small: the local estimate is coercive by construction.
     if (problem_.dirichlet_method != DirichletMethod::kNitsche || problem_.nitsche_penalty <= 0.0 ||
@@ -223,7 +227,12 @@ void PoissonSolver::solve() {
   r_.residual_norm = s.residual_norm;
   r_.solver_iterations = s.iterations;
   r_.solver_ordering = s.ordering;
-  r_.u = expand(sys_->reduced, s.x, sys_->bc, geometry_.space().num_dofs());
+  r_.free_dofs = s.free_dofs;
+  r_.ranks = s.ranks;
+  r_.elements_per_rank = s.elements_per_rank;
+  r_.dofs_per_rank = s.dofs_per_rank;
+  r_.element_owner = std::move(s.element_owner);
+  r_.u = std::move(s.x);
   if (singular_) r_.u.array() -= sys_->ones_load.dot(r_.u) / r_.domain_measure;
   done_ = 3;
 }
@@ -238,19 +247,22 @@ void PoissonSolver::errors() {
   std::optional<Assembler> error_assembler;
   if (finer) error_assembler.emplace(geometry_, *finer);
   const Assembler& norms = error_assembler ? *error_assembler : *sys_->assembler;
+  // Each process integrates its own elements (all of them in a serial run), then the parts are summed.
+  const LinearSystem& system = *sys_->system;
+  const std::vector<char>* own = system.own_elements();
   if (exact && singular_) {
     // Compare with the mean-zero representative of the exact solution.
-    const Eigen::VectorXd mean = norms.integrate(2, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+    const Eigen::VectorXd mean = system.sum(norms.integrate(2, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
       Eigen::VectorXd ue;
       exact->values(ctx.geo.x, ue);
       out(0) = ue.dot(ctx.weight);
       out(1) = ctx.weight.sum();
-    });
+    }, 1, own));
     exact = shifted_function(exact, -mean(0) / mean(1));
   }
   if (exact) {
     r_.error_quadrature = finer ? finer->name() : rules_.name();
-    r_.errors = compute_errors(norms, r_.u, *exact);
+    r_.errors = error_norms(system.sum(error_squares(norms, r_.u, *exact, own)));
     if (!std::isfinite(r_.errors->l2) || !std::isfinite(r_.errors->h1) || !std::isfinite(r_.errors->l2_exact)) {
       throw NumericalError("the error norms against the exact solution are not finite (L2 " + std::to_string(r_.errors->l2) +
                            ", H1 " + std::to_string(r_.errors->h1) + "): does the exact solution overflow?");

@@ -34,6 +34,9 @@ std::string analyse(const Eigen::SparseMatrix<double>& a, Llt& llt) {
 }  // namespace
 
 SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b, const SolverOptions& options) {
+  if (options.kind == SolverKind::Petsc) {
+    throw InputError("the petsc solver solves an assembled LinearSystem (fem::make_linear_system), not an Eigen matrix");
+  }
   const auto t0 = std::chrono::steady_clock::now();
   SolveResult r;
   if (a.rows() == 0) {
@@ -94,7 +97,8 @@ SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b
 SolverKind parse_solver(const std::string& name) {
   if (name == "cholmod") return SolverKind::Cholmod;
   if (name == "cg") return SolverKind::ConjugateGradient;
-  throw InputError("solver '" + name + "': unknown (known: cholmod, cg)");
+  if (name == "petsc") return SolverKind::Petsc;
+  throw InputError("solver '" + name + "': unknown (known: cholmod, cg, petsc)");
 }
 
 }  // namespace iga::fem

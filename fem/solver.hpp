@@ -1,19 +1,24 @@
 #pragma once
-// Sparse symmetric positive definite solves: CHOLMOD (supernodal Cholesky, through Eigen) or Eigen's
-// conjugate gradient with an incomplete Cholesky preconditioner.
+// Sparse symmetric positive definite solves: CHOLMOD (supernodal Cholesky, through Eigen), Eigen's conjugate
+// gradient with an incomplete Cholesky preconditioner, or a PETSc KSP on a distributed system
+// (fem/linear_system.hpp, the one interface the Poisson pipeline uses for all three).
 #include <Eigen/Sparse>
 #include <string>
+#include <vector>
 
 #include "core/types.hpp"
 
 namespace iga::fem {
 
-enum class SolverKind { Cholmod, ConjugateGradient };
+enum class SolverKind { Cholmod, ConjugateGradient, Petsc };
 
 struct SolverOptions {
   SolverKind kind = SolverKind::Cholmod;
-  double tolerance = 1e-12;   ///< CG: relative residual
-  Index max_iterations = 0;   ///< CG: 0 = 10 × size
+  double tolerance = 1e-12;   ///< CG and PETSc's KSP: relative residual (unpreconditioned norm)
+  Index max_iterations = 0;   ///< CG and KSP: 0 = 10 × size
+  /// PETSc: options in PETSc's own syntax ("-ksp_type cg -pc_type hypre"), inserted before the KSP reads its
+  /// options, so they override the defaults (CG + GAMG) as do those of the PETSC_OPTIONS environment.
+  std::string petsc_options;
   /// Any solver: a solution whose relative residual ||A x - b|| / ||b|| is above this is refused
   /// (NumericalError with the residual), never returned as if it were the answer.
   double max_residual = 1e-6;
@@ -21,19 +26,24 @@ struct SolverOptions {
 
 struct SolveResult {
   Eigen::VectorXd x;
-  std::string solver;          ///< "cholmod-supernodal-llt" or "cg-ichol"
+  std::string solver;          ///< "cholmod-supernodal-llt", "cg-ichol" or "petsc-<ksp>-<pc>"
   std::string ordering;        ///< the direct solver's fill-reducing ordering: "amd" or "metis" (empty for CG)
   double residual_norm = 0.0;  ///< ||A x - b|| / ||b|| (absolute when b = 0)
-  Index iterations = 0;        ///< CG iterations (0 for the direct solver)
-  double seconds = 0.0;        ///< factorisation + solve
+  Index iterations = 0;        ///< CG or KSP iterations (0 for the direct solver)
+  double seconds = 0.0;        ///< conditions applied + factorisation + solve (PETSc: the maximum over ranks)
+  Index free_dofs = 0;         ///< the reduced system's size (set by LinearSystem::solve)
+  int ranks = 1;               ///< processes that held the system
+  std::vector<Index> elements_per_rank, dofs_per_rank;  ///< owned elements and dofs of each rank (PETSc)
+  std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc)
 };
 
 /// Solves A x = b for symmetric positive definite A (both triangles stored). NumericalError when the
 /// matrix or right-hand side is not finite, the matrix is not positive definite, CG does not converge, or
-/// the solution is not finite or has a relative residual above options.max_residual.
+/// the solution is not finite or has a relative residual above options.max_residual. Kind Petsc: InputError (a
+/// PETSc solve goes through make_linear_system, fem/linear_system.hpp).
 SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b, const SolverOptions& options);
 
-/// "cholmod" or "cg"; InputError otherwise.
+/// "cholmod", "cg" or "petsc"; InputError otherwise.
 SolverKind parse_solver(const std::string& name);
 
 }  // namespace iga::fem

@@ -245,7 +245,7 @@ vtkNew<vtkUnstructuredGrid> grid_with_points(const BezierMesh& mesh) {
 }  // namespace
 
 void write_bezier_vtu(const std::string& path, const basis::Space& space, const BezierMesh& mesh,
-                      const ElementData& element_data) {
+                      const ElementData& element_data, const Pieces& pieces) {
   if (mesh.num_cells() != space.num_elements()) {
     throw InputError("Bézier output: " + std::to_string(mesh.num_cells()) + " cells for " +
                      std::to_string(space.num_elements()) + " elements");
@@ -267,7 +267,7 @@ void write_bezier_vtu(const std::string& path, const basis::Space& space, const 
   set_cells(grid, mesh.offsets, mesh.connectivity, types);
   grid->GetCellData()->SetHigherOrderDegrees(degrees);
   add_element_cell_data(grid, space, element_of_cell, element_data);
-  write_vtk_grid(path, grid);
+  write_vtk_grid(path, grid, pieces);
 }
 
 namespace {
@@ -330,7 +330,7 @@ BezierMesh outline_points(const BezierMesh& mesh, Outline& o) {
 
 }  // namespace
 
-void write_bezier_outline_vtu(const std::string& path, const BezierMesh& mesh) {
+void write_bezier_outline_vtu(const std::string& path, const BezierMesh& mesh, const Pieces& pieces) {
   Outline o = outline_of(mesh);
   auto grid = grid_with_points(outline_points(mesh, o));
   set_cells(grid, o.offsets, o.connectivity, std::vector<unsigned char>(o.element.size(), VTK_BEZIER_CURVE));
@@ -341,7 +341,7 @@ void write_bezier_outline_vtu(const std::string& path, const BezierMesh& mesh) {
     std::copy(values->begin(), values->end(), a->GetPointer(0));
     grid->GetCellData()->AddArray(a);
   }
-  write_vtk_grid(path, grid);
+  write_vtk_grid(path, grid, pieces);
 }
 
 std::string outline_path(const std::string& vtu_path) {
@@ -351,10 +351,10 @@ std::string outline_path(const std::string& vtu_path) {
 }
 
 void write_bezier(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd* u,
-                  const BezierOptions& options, const ElementData& element_data) {
+                  const BezierOptions& options, const ElementData& element_data, const Pieces& pieces) {
   const BezierMesh mesh = bezier_mesh(geometry, u, options);
-  write_bezier_vtu(path, geometry.space(), mesh, element_data);
-  write_bezier_outline_vtu(outline_path(path), mesh);
+  write_bezier_vtu(path, geometry.space(), mesh, element_data, pieces);
+  write_bezier_outline_vtu(outline_path(path), mesh, pieces);
 }
 
 }  // namespace iga::io

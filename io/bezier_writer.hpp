@@ -60,18 +60,19 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
 /// "element", "element_kind", "level" and element_data (vtu_cell_data.hpp). InputError(path, 0, "cannot write
 /// file") when VTK fails.
 void write_bezier_vtu(const std::string& path, const basis::Space& space, const BezierMesh& mesh,
-                      const ElementData& element_data = {});
+                      const ElementData& element_data = {}, const Pieces& pieces = {});
 
 /// Writes each element side once as a VTK_BEZIER_CURVE (the side's control points of its cell; a side between
 /// cells of different degrees appears once per degree, both exact), with cell data "element" (the first element
 /// that has it) and "side"; point data "u" when the mesh has it.
-void write_bezier_outline_vtu(const std::string& path, const BezierMesh& mesh);
+void write_bezier_outline_vtu(const std::string& path, const BezierMesh& mesh, const Pieces& pieces = {});
 
 /// "<base>_outline.vtu" for "<base>.vtu" (or "<path>_outline.vtu").
 std::string outline_path(const std::string& vtu_path);
 
 /// bezier_mesh, write_bezier_vtu to path and write_bezier_outline_vtu to outline_path(path).
+/// pieces: a distributed run's (vtk_file.hpp): this rank writes its elements' cells, rank 0 the .pvtu.
 void write_bezier(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd* u,
-                  const BezierOptions& options = {}, const ElementData& element_data = {});
+                  const BezierOptions& options = {}, const ElementData& element_data = {}, const Pieces& pieces = {});
 
 }  // namespace iga::io

@@ -18,7 +18,8 @@ std::vector<std::string> write_output(const std::string& path, const basis::Geom
     BezierOptions bo;
     bo.degree = output.degree;
     bo.exact = output.exact;
-    write_bezier(path, geometry, u, bo, element_data);
+    write_bezier(path, geometry, u, bo, element_data, output.pieces);
+    if (output.pieces.ranks > 1) return {summary_path(path), summary_path(outline_path(path))};
     return {path, outline_path(path)};
   }
   if (output.format != "linear") throw InputError("--vtu-format: '" + output.format + "' is not bezier or linear");
@@ -26,10 +27,11 @@ std::vector<std::string> write_output(const std::string& path, const basis::Geom
   vo.samples = output.samples;
   vo.exact = output.exact;
   if (u != nullptr) {
-    write_vtu(path, geometry, *u, vo, element_data);
+    write_vtu(path, geometry, *u, vo, element_data, output.pieces);
   } else {
-    write_vtu(path, geometry, vo, element_data);
+    write_vtu(path, geometry, vo, element_data, output.pieces);
   }
+  if (output.pieces.ranks > 1) return {summary_path(path)};
   return {path};
 }
 

@@ -134,7 +134,7 @@ void sample_element(Index e, const basis::Geometry& geometry, const SamplePatter
 
 /// sample == nullptr: the geometry alone (no "u", "grad_u" or "error"; "exact" with options.exact).
 void write_samples(const std::string& path, const basis::Geometry& geometry, const Sampler* sample, bool with_grad,
-                   const VtuOptions& options, const ElementData& element_data) {
+                   const VtuOptions& options, const ElementData& element_data, const Pieces& pieces = {}) {
   const basis::Space& space = geometry.space();
   if (options.samples < 2) {
     throw InputError("write_vtu: samples must be at least 2, got " + std::to_string(options.samples));
@@ -200,7 +200,7 @@ void write_samples(const std::string& path, const basis::Geometry& geometry, con
   if (with_u) grid->GetPointData()->SetActiveScalars("u");
   if (a.grad != nullptr) grid->GetPointData()->SetActiveVectors("grad_u");
   add_element_cell_data(grid, space, element_of_cell, element_data);
-  write_vtk_grid(path, grid);
+  write_vtk_grid(path, grid, pieces);
 }
 
 }  // namespace
@@ -211,7 +211,7 @@ Eigen::Matrix2Xd sample_points(basis::Shape shape, int samples) {
 }
 
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd& u,
-               const VtuOptions& options, const ElementData& element_data) {
+               const VtuOptions& options, const ElementData& element_data, const Pieces& pieces) {
   const basis::Space& space = geometry.space();
   if (u.size() != space.num_dofs()) {
     throw InputError("write_vtu: the solution has " + std::to_string(u.size()) + " coefficients, the space has " +
@@ -229,7 +229,7 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
     grads->resize(3, values.size());
     for (Index k = 0; k < values.size(); ++k) grads->col(k) = gv.tu.col(k) * du(k) + gv.tv.col(k) * dv(k);
   };
-  write_samples(path, geometry, &sample, true, options, element_data);
+  write_samples(path, geometry, &sample, true, options, element_data, pieces);
 }
 
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const ElementField& field,
@@ -243,8 +243,8 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
 }
 
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const VtuOptions& options,
-               const ElementData& element_data) {
-  write_samples(path, geometry, nullptr, false, options, element_data);
+               const ElementData& element_data, const Pieces& pieces) {
+  write_samples(path, geometry, nullptr, false, options, element_data, pieces);
 }
 
 void write_pvd(const std::string& path, const std::vector<SeriesEntry>& entries) {

@@ -10,6 +10,7 @@
 #include "basis/geometry.hpp"
 #include "fem/function.hpp"
 #include "io/element_data.hpp"
+#include "io/vtk_file.hpp"
 
 namespace iga::io {
 
@@ -45,8 +46,9 @@ void write_pvd(const std::string& path, const std::vector<SeriesEntry>& entries)
 ///
 /// Throws InputError when u.size() != num_dofs or samples < 2, and InputError(path, 0, "cannot write file")
 /// when VTK's writer fails.
+/// pieces: a distributed run's (vtk_file.hpp): this rank writes its elements' cells, rank 0 the .pvtu.
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd& u,
-               const VtuOptions& options = {}, const ElementData& element_data = {});
+               const VtuOptions& options = {}, const ElementData& element_data = {}, const Pieces& pieces = {});
 
 /// The reference points write_vtu samples on an element of this shape, in the order of its points in the file
 /// (2 × q; InputError for samples < 2).
@@ -62,6 +64,6 @@ void write_vtu(const std::string& path, const basis::Geometry& geometry, const E
                const VtuOptions& options = {}, const ElementData& element_data = {});
 /// The geometry alone (no solution): the same grid without "u", "grad_u" and "error" ("exact" with options.exact).
 void write_vtu(const std::string& path, const basis::Geometry& geometry, const VtuOptions& options,
-               const ElementData& element_data = {});
+               const ElementData& element_data = {}, const Pieces& pieces = {});
 
 }  // namespace iga::io

@@ -16,6 +16,10 @@
 #   CatmullClarkPoisson.LaplaceBeltramiOnTorusBeforeAndAfterEnrichment. Their code runs under ASan in smaller tests:
 #   HierarchicalCatmullClark.CollocationRank, CatmullClarkEvRates.QuadraticEnrichmentRestoresTheRates and the other
 #   CatmullClarkPoisson cases (surfaces, enrichment, Nitsche); the Release run keeps all three.
+# - label "mpi" (the distributed solver's tests) runs after the others, without LeakSanitizer: Open MPI keeps about
+#   116 kB in 3,300 allocations past MPI_Finalize, most of them from its run-time plugins, which are unloaded by
+#   then, so their frames read "<unknown module>" and no suppression can name them (measured 2026-12-03). Address
+#   and undefined-behaviour checks stay on; iga's own code is leak-checked by every other test.
 # - label "corpus" (bad_input_corpus): run_corpus.py limits every run's address space (RLIMIT_AS, 8 GiB), and
 #   ASan reserves terabytes of shadow memory at start-up, so every case would die before main. The corpus runs
 #   after ctest instead, with the address-space limit raised past ASan's reservation and ASan's own
@@ -42,7 +46,10 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:report_error_type=1"
 status=0
 heavy='^(HierarchicalCatmullClark\.CollocationRankRandomMarking|CatmullClarkPoisson\.EnrichedExtraordinaryVerticesOnSquareEvs'
 heavy+='|CatmullClarkPoisson\.LaplaceBeltramiOnTorusBeforeAndAfterEnrichment)$'
-ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE 'slow|install|corpus|docs' -E "$heavy" || status=$?
+ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE 'slow|install|corpus|docs|mpi' -E "$heavy" || status=$?
+echo "sanitize: the distributed solver's tests (label mpi) under ASan/UBSan" >&2
+ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" \
+  ctest --test-dir "$build" --output-on-failure -j "$jobs" -L mpi -LE 'slow|docs' || status=1
 
 corpus_args=()
 for p in benchmarks/iga-poisson benchmarks/iga-bem benchmarks/iga-quadrature tools/iga-geometry tools/iga-knots \

@@ -12,6 +12,9 @@ packages=(
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnlopt-cxx-dev libosd-dev libvtk9-dev
   libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev
   python3-matplotlib libbenchmark-dev
+  # The distributed solver (--solver petsc): PETSc 3.18 (with hypre and MUMPS), OpenMPI (mpirun), METIS, and
+  # pkg-config, through which CMake finds PETSc.
+  libpetsc-real-dev libopenmpi-dev openmpi-bin libmetis-dev pkg-config
 )
 # ParaView, to look at the output: Debian's python3-paraview (pvpython) declares Conflicts: python3-vtk9, which
 # libvtk9-dev depends on, so apt would remove it to install ours. The paraview GUI package only recommends

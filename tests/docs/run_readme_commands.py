@@ -26,6 +26,11 @@ import sys
 import tempfile
 import time
 
+# The README's mpirun commands as a user types them: Open MPI's own switches for running as root (CI does) and for
+# more ranks than cores, set through its environment instead of the command line.
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+
 PROGRAM = re.compile(r"(?<![\w./-])(?:\./)?build/(benchmarks|tools|examples)/")
 
 
@@ -101,7 +106,7 @@ def main():
             start = time.monotonic()
             try:
                 r = subprocess.run(["bash", "-o", "pipefail", "-c", run], cwd=folders[group], capture_output=True,
-                                   text=True, timeout=args.timeout, stdin=subprocess.DEVNULL)
+                                   text=True, timeout=args.timeout, stdin=subprocess.DEVNULL, env=MPI_ENV)
                 rc, err = r.returncode, r.stderr.strip().splitlines()
             except subprocess.TimeoutExpired:
                 rc, err = "timeout", [f"still running after {args.timeout:g} s"]

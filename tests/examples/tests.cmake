@@ -21,3 +21,8 @@ set_tests_properties(example_poisson_annulus example_laplace_beltrami_cube examp
 add_test(NAME example_refinement_series_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${IGA_EXAMPLE_DIR}/series)
 set_tests_properties(example_refinement_series_clean PROPERTIES FIXTURES_SETUP example_series LABELS examples)
 set_tests_properties(example_refinement_series PROPERTIES FIXTURES_REQUIRED example_series)
+# The distributed driver under mpirun at 2 ranks (as root in CI: --allow-run-as-root), one OpenMP thread each.
+add_test(NAME example_poisson_petsc
+         COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:poisson_petsc>
+         WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+set_tests_properties(example_poisson_petsc PROPERTIES LABELS "examples;mpi" TIMEOUT 300 ENVIRONMENT "OMP_NUM_THREADS=1")

@@ -1,0 +1,51 @@
+#pragma once
+// The assembled linear system and its solve behind one interface, chosen by name (DESIGN.md item 7):
+// "cholmod" and "cg" hold one process's Eigen matrix (CscSink); "petsc" a PETSc matrix distributed over the
+// ranks of PETSC_COMM_WORLD (fem/parallel.hpp; one rank without mpirun), each rank assembling the elements a
+// METIS partition gives it (fem/partition.hpp). The conditions are applied one way for both: u = u0 + T w
+// (DirichletConditions: T the identity on the free dofs and −coupling on the constrained ones, u0 the prescribed
+// values) and the reduced system Tᵀ A T w = Tᵀ (b − A u0), after assembly.
+#include <Eigen/Sparse>
+#include <memory>
+
+#include "fem/assembler.hpp"
+#include "fem/dirichlet.hpp"
+#include "fem/solver.hpp"
+#include "fem/system_sink.hpp"
+
+namespace iga::fem {
+
+class LinearSystem {
+ public:
+  virtual ~LinearSystem() = default;
+  /// Where the element loop writes (Assembler::assemble(forms, sink)); it takes this process's elements.
+  virtual SystemSink& sink() = 0;
+  /// The element loop's figures over all processes, from this process's own (the same for one process).
+  virtual AssemblyStats total(const AssemblyStats& own) const { return own; }
+  /// The elements this process integrates (one entry per element, non-zero for its own; null: all of them), and
+  /// the sum over all processes of what each integrated: a distributed run's error norms and means.
+  virtual const std::vector<char>* own_elements() const { return nullptr; }
+  virtual Eigen::VectorXd sum(const Eigen::VectorXd& own) const { return own; }
+  /// Adds terms every process computed alike (boundary loads, Nitsche's terms: small): a (num_dofs², or 0 × 0 for
+  /// none) and b (num_dofs, or empty for none). Each process adds the rows it owns.
+  virtual void add(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b) = 0;
+  /// Σ_i b_i of the load assembled so far, over all processes.
+  virtual double load_sum() = 0;
+  /// The assembled matrix and load before the conditions, in dof numbering, on every process (gathered from the
+  /// ranks of a distributed system: for tests and small problems). Before solve(): a distributed system frees
+  /// them there (InputError after).
+  virtual Eigen::SparseMatrix<double> global_matrix() = 0;
+  virtual Eigen::VectorXd global_load() = 0;
+  /// Applies the conditions, solves the reduced system, and returns the whole solution on every process (x has
+  /// num_dofs entries). NumericalError as fem::solve (a KSP that does not converge: its reason, in one line).
+  virtual SolveResult solve(const DirichletConditions& bc) = 0;
+};
+
+/// The system for the assembler's space and options.kind. For kind Petsc: InputError without an open
+/// ParallelSession, or when the space has fewer elements than ranks.
+std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, const SolverOptions& options);
+
+/// The PETSc system (fem/petsc_system.cpp); make_linear_system calls it for SolverKind::Petsc.
+std::unique_ptr<LinearSystem> make_petsc_system(const Assembler& assembler, const SolverOptions& options);
+
+}  // namespace iga::fem

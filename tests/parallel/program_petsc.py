@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""iga-poisson --solver petsc end to end, under mpirun at 2 ranks (one OpenMP thread each) and without it:
+the report's figures (ranks, owned elements and dofs per rank, iterations, residual) and its error norms against
+a serial CHOLMOD run of the same problem; the .pvtu and its pieces read back with VTK; a bad PETSc option and a
+KSP that does not converge as one line on stderr and a non-zero exit (mpirun -q: its own notices off).
+Usage: program_petsc.py IGA_POISSON MPIEXEC WORKDIR"""
+import json
+import os
+import subprocess
+import sys
+
+exe, mpiexec, work = sys.argv[1:4]
+os.makedirs(work, exist_ok=True)
+env = dict(os.environ, OMP_NUM_THREADS="1")
+mpirun = [mpiexec, "-q", "--allow-run-as-root", "--oversubscribe", "-np", "2"]
+common = ["--degree", "3", "--refine", "4", "--quiet", "--neumann-boundary", "v0"]
+failures = []
+
+
+def run(cmd):
+    return subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True, timeout=300)
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+
+
+serial = run([exe] + common + ["--vtu", "none", "--json", "serial.json"])
+check(serial.returncode == 0, "serial run: " + serial.stderr)
+for ranks, prefix in ((1, []), (2, mpirun)):
+    name = f"petsc{ranks}"
+    r = run(prefix + [exe] + common + ["--solver", "petsc", "--vtu", name + ".vtu", "--json", name + ".json"])
+    check(r.returncode == 0, f"{ranks} rank(s): exit {r.returncode}: {r.stderr}")
+    if r.returncode != 0:
+        continue
+    s, p = json.load(open(os.path.join(work, "serial.json"))), json.load(open(os.path.join(work, name + ".json")))
+    check(p["ranks"] == ranks, f"ranks {p['ranks']} != {ranks}")
+    check(sum(p["elements_per_rank"]) == s["elements"], "owned elements do not add up to the elements")
+    check(sum(p["dofs_per_rank"]) == s["dofs"], "owned dofs do not add up to the dofs")
+    check(len(p["dofs_per_rank"]) == ranks and min(p["dofs_per_rank"]) > 0, "a rank owns no dofs")
+    check(p["solver"] == "petsc-cg-gamg" and p["solver_iterations"] > 0, f"solver {p['solver']} {p['solver_iterations']}")
+    check(p["residual_norm"] <= 1e-11, f"residual {p['residual_norm']}")
+    for key in ("l2_error", "h1_error"):
+        check(abs(p[key] - s[key]) <= 1e-8 * s[key], f"{ranks} rank(s): {key} {p[key]} against CHOLMOD's {s[key]}")
+    check(p["free_dofs"] == s["free_dofs"] and p["domain_measure"] == p["domain_measure"], "free dofs differ")
+    if ranks == 1:
+        check(p["vtu"] == name + ".vtu" and os.path.exists(os.path.join(work, name + ".vtu")), f"{name}.vtu not written")
+        continue
+    # One piece per rank and the .pvtu naming them, read back with VTK: every element once, each cell's rank.
+    check(p["vtu"] == name + ".pvtu" and p["vtu_outline"] == name + "_outline.pvtu", f"vtu keys {p['vtu']}")
+    try:
+        import vtk
+        from vtk.util.numpy_support import vtk_to_numpy
+        reader = vtk.vtkXMLPUnstructuredGridReader()
+        reader.SetFileName(os.path.join(work, p["vtu"]))
+        reader.Update()
+        grid = reader.GetOutput()
+        check(grid.GetNumberOfCells() == s["elements"], f"{grid.GetNumberOfCells()} cells for {s['elements']} elements")
+        elements = sorted(vtk_to_numpy(grid.GetCellData().GetArray("element")).tolist())
+        check(elements == list(range(s["elements"])), "the pieces do not hold every element once")
+        owners = set(vtk_to_numpy(grid.GetCellData().GetArray("rank")).tolist())
+        check(owners == set(range(ranks)), f"ranks in the cells: {owners}")
+        check(grid.GetPointData().GetArray("u") is not None, "no u in the pieces")
+    except ImportError:
+        failures.append("python3-vtk9 is missing (scripts/setup.sh installs it)")
+
+for options, expect in (("-pc_type no_such_pc", "no_such_pc"), ("-ksp_max_it 2 -pc_type none", "DIVERGED_ITS"),
+                        ("-ksp_tyep cg", "-ksp_tyep was not used")):
+    r = run(mpirun + [exe] + common + ["--solver", "petsc", "--vtu", "none", "--json", "none", "--petsc-options", options])
+    lines = r.stderr.strip().splitlines()
+    check(r.returncode != 0, f"{options}: exit 0")
+    check(len(lines) == 1 and expect in lines[0] and lines[0].startswith("iga-poisson: error:"),
+          f"{options}: stderr is not one line naming {expect}: {r.stderr!r}")
+
+for f in failures:
+    print("FAILED:", f)
+print(f"{0 if failures else 1} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,260 @@
+// The distributed solver (fem/linear_system.hpp, "petsc") against the serial one, at whatever number of ranks
+// this program is started with (ctest: 1 without mpirun, 2 and 3 under mpirun): the METIS partition, the
+// assembled matrix entry by entry, the solution against CHOLMOD's for every backend with Dirichlet and Neumann
+// parts and the coupled constraints of receding boundaries, convergence rates, and failures as one exception on
+// every rank. Every rank runs every test; rank 0 prints.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "basis/registry.hpp"
+#include "core/error.hpp"
+#include "fem/dirichlet.hpp"
+#include "fem/linear_system.hpp"
+#include "fem/parallel.hpp"
+#include "fem/partition.hpp"
+#include "fem/poisson.hpp"
+#include "fem/problems.hpp"
+#include "mesh/obj_reader.hpp"
+#include "mesh/three_valent.hpp"
+#include "quadrature/rule_provider.hpp"
+#include "support/rates.hpp"
+
+using namespace iga;
+
+namespace {
+
+mesh::PolyMesh net_of(const std::string& backend, const std::string& file) {
+  mesh::PolyMesh m = mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/" + file);
+  return backend == "halfbox" ? mesh::dual_net(m) : m;
+}
+
+struct Case {
+  std::string backend, mesh;  // mesh empty: the backend's default geometry
+  int refine;
+};
+
+basis::Geometry geometry_of(const Case& c) {
+  basis::BackendFacts facts;
+  basis::BackendOptions options;
+  if (c.backend == "bspline") options.degree = 3;
+  if (c.mesh.empty()) return basis::make_refined_geometry(basis::backend(c.backend), nullptr, options, c.refine, facts).geometry;
+  const mesh::PolyMesh net = net_of(c.backend, c.mesh);
+  return basis::make_refined_geometry(basis::backend(c.backend), &net, options, c.refine, facts).geometry;
+}
+
+std::unique_ptr<quadrature::RuleProvider> rules_of(const Case& c, const basis::Geometry& g) {
+  const basis::Backend& b = basis::backend_of(g.space());
+  return quadrature::make_rule_provider(b.default_quadrature(c.backend == "bspline" ? 3 : 3), 3);
+}
+
+// u = sin πx sin πy with the normal flux (Neumann) on the boundary edges near y = 0 (every domain here has its
+// lower side there; a receding boundary lies a little above it) and Dirichlet data on the others.
+fem::PoissonProblem problem_with_neumann() {
+  const fem::ManufacturedProblem m = fem::manufactured_problem("sine");
+  fem::PoissonProblem p;
+  p.source = m.source;
+  p.dirichlet = m.exact;
+  p.exact = m.exact;
+  p.neumann = fem::normal_flux(m.exact);
+  p.neumann_where = fem::make_function([](const Eigen::Vector3d& x) { return x(1) < 0.05 ? 1.0 : -1.0; });
+  return p;
+}
+
+fem::SolverOptions petsc(const std::string& options = "") {
+  fem::SolverOptions o;
+  o.kind = fem::SolverKind::Petsc;
+  o.tolerance = 1e-14;  // relative residual: the solution then agrees with the direct solver's to about 1e-11
+  o.petsc_options = options;
+  return o;
+}
+
+double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();
+}
+
+const std::vector<Case> kCases = {
+    {"bspline", "", 3},                   // the NURBS quarter annulus, 8 × 8 elements
+    {"cc", "square_evs.obj", 1},          // Catmull–Clark with extraordinary vertices
+    {"polyhedral", "square_evs.obj", 1},  // receding boundary: coupled Dirichlet constraints
+    {"halfbox", "tri_square.obj", 1},     // triangles, receding boundary
+};
+
+}  // namespace
+
+TEST(Partition, EveryElementOwnedOnceDofsByTheirLowestOwnerAndNumberedByRank) {
+  const basis::Geometry g = geometry_of({"bspline", "", 3});
+  const basis::Space& s = g.space();
+  for (int parts : {1, 2, 3, 5}) {
+    const fem::Partition p = fem::partition_elements(s, parts);
+    ASSERT_EQ(p.element_owner.size(), static_cast<std::size_t>(s.num_elements()));
+    Index owned = 0;
+    for (int r = 0; r < parts; ++r) {
+      EXPECT_GT(p.owned_elements(r), 0) << parts << " parts, rank " << r;
+      owned += p.owned_elements(r);
+    }
+    EXPECT_EQ(owned, s.num_elements());  // every owner is one of the ranks, and each element counted once
+    std::vector<int> lowest(static_cast<std::size_t>(s.num_dofs()), parts);
+    for (Index e = 0; e < s.num_elements(); ++e) {
+      for (Index d : s.dofs(e)) lowest[static_cast<std::size_t>(d)] = std::min(lowest[static_cast<std::size_t>(d)], p.element_owner[static_cast<std::size_t>(e)]);
+    }
+    std::vector<char> used(static_cast<std::size_t>(s.num_dofs()), 0);
+    for (Index d = 0; d < s.num_dofs(); ++d) {
+      EXPECT_EQ(p.dof_owner[static_cast<std::size_t>(d)], lowest[static_cast<std::size_t>(d)]);
+      const Index n = p.number[static_cast<std::size_t>(d)];
+      const int r = p.dof_owner[static_cast<std::size_t>(d)];
+      EXPECT_GE(n, p.offsets[static_cast<std::size_t>(r)]);
+      EXPECT_LT(n, p.offsets[static_cast<std::size_t>(r) + 1]);
+      ASSERT_FALSE(used[static_cast<std::size_t>(n)]) << "number " << n << " given twice";
+      used[static_cast<std::size_t>(n)] = 1;
+    }
+    EXPECT_EQ(p.offsets.back(), s.num_dofs());
+  }
+  EXPECT_THROW(fem::partition_elements(s, static_cast<int>(s.num_elements()) + 1), InputError);
+}
+
+// The matrix and load the ranks assemble, gathered, equal the serial CSC assembly entry by entry.
+TEST(PetscSystem, AssembledMatrixEqualsTheSerialOneEntryByEntry) {
+  for (const Case& c : kCases) {
+    const basis::Geometry g = geometry_of(c);
+    const auto rules = rules_of(c, g);
+    const fem::Assembler assembler(g, *rules);
+    const fem::StiffnessForm k;
+    const fem::SourceForm f(fem::manufactured_problem("sine").source);
+    const std::vector<const fem::BilinearForm*> bf{&k};
+    const std::vector<const fem::LinearForm*> lf{&f};
+    Eigen::SparseMatrix<double> a;
+    Eigen::VectorXd b;
+    assembler.assemble(bf, lf, a, b);
+    const std::unique_ptr<fem::LinearSystem> sys = fem::make_linear_system(assembler, petsc());
+    assembler.assemble(bf, lf, sys->sink());
+    const Eigen::SparseMatrix<double> ap = sys->global_matrix();
+    const Eigen::VectorXd bp = sys->global_load();
+    const double scale = Eigen::Map<const Eigen::VectorXd>(a.valuePtr(), a.nonZeros()).lpNorm<Eigen::Infinity>();
+    const Eigen::SparseMatrix<double> diff = ap - a;
+    double worst = 0;
+    for (Index j = 0; j < diff.outerSize(); ++j) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(diff, j); it; ++it) worst = std::max(worst, std::abs(it.value()));
+    }
+    EXPECT_LE(worst, 1e-14 * scale) << c.backend << " at " << fem::ranks() << " ranks";
+    EXPECT_LE((bp - b).lpNorm<Eigen::Infinity>(), 1e-14 * b.lpNorm<Eigen::Infinity>()) << c.backend;
+  }
+}
+
+// The PETSc solution (CG + GAMG, and MUMPS's direct solve) equals CHOLMOD's to 1e-10, relative, with Dirichlet and
+// Neumann parts; polyhedral and half-box go through the coupled constraints of their receding boundaries.
+TEST(PetscSystem, SolutionEqualsCholmodForEveryBackend) {
+  for (const Case& c : kCases) {
+    const basis::Geometry g = geometry_of(c);
+    const auto rules = rules_of(c, g);
+    const fem::PoissonProblem p = problem_with_neumann();
+    const fem::PoissonResult serial = fem::solve_poisson(g, *rules, p);
+    EXPECT_GT(serial.neumann_edges, 0) << c.backend;  // both kinds of boundary condition are exercised
+    EXPECT_GT(serial.dirichlet_edges, 0) << c.backend;
+    for (const std::string& options : {std::string(), std::string("-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps")}) {
+      const fem::PoissonResult r = fem::solve_poisson(g, *rules, p, petsc(options));
+      EXPECT_LE(relative_difference(r.u, serial.u), 1e-10) << c.backend << " " << options << " at " << fem::ranks() << " ranks";
+      EXPECT_EQ(r.ranks, fem::ranks());
+      EXPECT_EQ(r.free_dofs, serial.free_dofs) << c.backend;
+      EXPECT_NEAR(r.errors->l2, serial.errors->l2, 1e-9 * serial.errors->l2) << c.backend;
+      Index dofs = 0;
+      for (Index d : r.dofs_per_rank) dofs += d;
+      EXPECT_EQ(dofs, serial.dofs);
+    }
+  }
+}
+
+// The receding boundaries really are coupled (so the test above covers MatPtAP, not only the selection).
+TEST(PetscSystem, RecedingBoundariesHaveCoupledConstraints) {
+  for (const Case& c : kCases) {
+    if (c.backend != "polyhedral" && c.backend != "halfbox") continue;
+    const basis::Geometry g = geometry_of(c);
+    const auto rules = rules_of(c, g);
+    const fem::Assembler assembler(g, *rules);
+    const fem::PoissonProblem p = problem_with_neumann();
+    const fem::BoundarySplit split = fem::split_boundary(g, p);
+    EXPECT_GT(fem::project_dirichlet(assembler, split.dirichlet, p.dirichlet).coupling.nonZeros(), 0) << c.backend;
+  }
+}
+
+// A mean-zero problem (pure Neumann) and Nitsche's method go through the same system.
+TEST(PetscSystem, MeanZeroAndNitscheEqualCholmod) {
+  const Case c{"bspline", "", 3};
+  const basis::Geometry g = geometry_of(c);
+  const auto rules = rules_of(c, g);
+  fem::PoissonProblem p = problem_with_neumann();
+  p.dirichlet_method = fem::DirichletMethod::kNitsche;
+  EXPECT_LE(relative_difference(fem::solve_poisson(g, *rules, p, petsc()).u, fem::solve_poisson(g, *rules, p).u), 1e-10);
+  fem::PoissonProblem n = problem_with_neumann();
+  n.neumann_where = fem::make_function([](const Eigen::Vector3d&) { return 1.0; });
+  n.mean_zero = true;
+  const fem::PoissonResult serial = fem::solve_poisson(g, *rules, n);
+  const fem::PoissonResult r = fem::solve_poisson(g, *rules, n, petsc());
+  EXPECT_TRUE(r.mean_zero);
+  EXPECT_NEAR(r.compatibility_defect, serial.compatibility_defect, 1e-12);
+  EXPECT_LE(relative_difference(r.u, serial.u), 1e-10);
+}
+
+// Convergence rates (B-spline p = 2, L2 and H1) over three levels equal the serial ones.
+TEST(PetscSystem, ConvergenceRatesEqualTheSerialOnes) {
+  std::vector<double> l2s, l2p, h1s, h1p;
+  for (int level = 2; level <= 4; ++level) {
+    basis::BackendFacts facts;
+    basis::BackendOptions options;
+    options.degree = 2;
+    const basis::Geometry g =
+        basis::make_refined_geometry(basis::backend("bspline"), nullptr, options, level, facts).geometry;
+    const auto rules = quadrature::make_rule_provider("gauss:3", 2);
+    const fem::PoissonProblem p = problem_with_neumann();
+    const fem::PoissonResult s = fem::solve_poisson(g, *rules, p);
+    const fem::PoissonResult r = fem::solve_poisson(g, *rules, p, petsc());
+    l2s.push_back(s.errors->l2);
+    h1s.push_back(s.errors->h1);
+    l2p.push_back(r.errors->l2);
+    h1p.push_back(r.errors->h1);
+  }
+  const double l2 = test::fitted_rate(l2s), h1 = test::fitted_rate(h1s);
+  EXPECT_GT(l2, 2.8);
+  EXPECT_GT(h1, 1.8);
+  EXPECT_NEAR(test::fitted_rate(l2p), l2, 1e-6);
+  EXPECT_NEAR(test::fitted_rate(h1p), h1, 1e-6);
+}
+
+// A bad option or a KSP that does not converge is one exception with one line, on every rank (no hang).
+TEST(PetscSystem, BadOptionsAndFailedSolvesAreOneLineErrors) {
+  const Case c{"bspline", "", 2};
+  const basis::Geometry g = geometry_of(c);
+  const auto rules = rules_of(c, g);
+  const fem::PoissonProblem p = problem_with_neumann();
+  auto message = [&](const fem::SolverOptions& o) -> std::string {
+    try {
+      fem::solve_poisson(g, *rules, p, o);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const std::string unknown = message(petsc("-pc_type no_such_preconditioner"));
+  EXPECT_NE(unknown.find("no_such_preconditioner"), std::string::npos) << unknown;
+  const std::string unused = message(petsc("-ksp_tyep cg"));
+  EXPECT_NE(unused.find("-ksp_tyep was not used"), std::string::npos) << unused;
+  fem::SolverOptions few = petsc("-pc_type jacobi");
+  few.max_iterations = 2;
+  const std::string diverged = message(few);
+  EXPECT_NE(diverged.find("DIVERGED_ITS after 2 iterations"), std::string::npos) << diverged;
+  for (const std::string& m : {unknown, unused, diverged}) EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  // Options do not leak from one solve into the next: the default solve still works.
+  EXPECT_LE(relative_difference(fem::solve_poisson(g, *rules, p, petsc()).u, fem::solve_poisson(g, *rules, p).u), 1e-10);
+}
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  int args = 1;
+  fem::ParallelSession session(args, argv);
+  if (fem::rank() > 0) {
+    ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  const int failed = RUN_ALL_TESTS();
+  return fem::max_over_ranks(failed) > 0 ? 1 : 0;
+}

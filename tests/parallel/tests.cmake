@@ -1,0 +1,20 @@
+# parallel/: the distributed solver (fem/linear_system.hpp, "petsc") against the serial one: one program, run
+# without mpirun (1 rank) and under mpirun at 2 and 3 ranks (--allow-run-as-root: CI runs as root;
+# --oversubscribe: 3 ranks on this 2-core machine). One OpenMP thread per rank. Label mpi.
+add_executable(test_petsc ${CMAKE_CURRENT_LIST_DIR}/test_petsc.cpp)
+target_compile_options(test_petsc PRIVATE ${IGA_WARNINGS})
+target_link_libraries(test_petsc PRIVATE iga::iga GTest::gtest)
+target_compile_definitions(test_petsc PRIVATE IGA_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+target_include_directories(test_petsc PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+add_test(NAME petsc_1_rank COMMAND test_petsc)
+foreach(n 2 3)
+  add_test(NAME petsc_${n}_ranks
+           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${n} --allow-run-as-root --oversubscribe $<TARGET_FILE:test_petsc>)
+endforeach()
+set_tests_properties(petsc_1_rank petsc_2_ranks petsc_3_ranks PROPERTIES LABELS mpi TIMEOUT 600
+                     ENVIRONMENT "OMP_NUM_THREADS=1")
+# iga-poisson --solver petsc end to end (mpirun at 2 ranks and without it): report, errors, failures as one line.
+add_test(NAME program_petsc
+         COMMAND /usr/bin/python3 ${CMAKE_CURRENT_LIST_DIR}/program_petsc.py $<TARGET_FILE:iga-poisson> ${MPIEXEC_EXECUTABLE}
+                 ${CMAKE_CURRENT_BINARY_DIR}/program_petsc)
+set_tests_properties(program_petsc PROPERTIES LABELS mpi TIMEOUT 600)
