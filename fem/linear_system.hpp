@@ -6,8 +6,12 @@
 // (DirichletConditions: T the identity on the free dofs and −coupling on the constrained ones, u0 the prescribed
 // values) and the reduced system Tᵀ A T w = Tᵀ (b − A u0), after assembly.
 #include <Eigen/Sparse>
+#include <exception>
 #include <memory>
+#include <optional>
+#include <string>
 
+#include "core/error.hpp"
 #include "fem/assembler.hpp"
 #include "fem/dirichlet.hpp"
 #include "fem/solver.hpp"
@@ -26,6 +30,26 @@ class LinearSystem {
   /// the sum over all processes of what each integrated: a distributed run's error norms and means.
   virtual const std::vector<char>* own_elements() const { return nullptr; }
   virtual Eigen::VectorXd sum(const Eigen::VectorXd& own) const { return own; }
+  /// Runs f, a step that each process does on its own elements and may fail on one of them only (an element
+  /// loop, error norms): a failure anywhere is rethrown on every process, so none waits in a later collective
+  /// call for one that has given up. The process that failed rethrows its own exception; the others an Error with
+  /// the message of the lowest failing rank. Serial: f's exception as it is.
+  template <class F>
+  void run_everywhere(F&& f) const {
+    std::exception_ptr error;
+    std::optional<std::string> mine;
+    try {
+      f();
+    } catch (const std::exception& e) {
+      error = std::current_exception();
+      mine = e.what();
+    }
+    const std::optional<std::string> first = first_failure(mine);
+    if (error) std::rethrow_exception(error);
+    if (first) throw Error(*first);
+  }
+  /// The message of the lowest process whose `mine` is set, on every process (serial: mine).
+  virtual std::optional<std::string> first_failure(const std::optional<std::string>& mine) const { return mine; }
   /// Adds terms every process computed alike (boundary loads, Nitsche's terms: small): a (num_dofs², or 0 × 0 for
   /// none) and b (num_dofs, or empty for none). Each process adds the rows it owns.
   virtual void add(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b) = 0;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <chrono>
 #include <iomanip>
 #include <mutex>
@@ -123,6 +124,18 @@ class PetscSystem final : public LinearSystem {
     return {sum_over_ranks(own.quadrature_points), sum_over_ranks(own.measure)};
   }
   const std::vector<char>* own_elements() const override { return &own_; }
+  std::optional<std::string> first_failure(const std::optional<std::string>& mine) const override {
+    const int me = mine ? rank_ : std::numeric_limits<int>::max();
+    int first = me;
+    MPI_Allreduce(&me, &first, 1, MPI_INT, MPI_MIN, comm_);
+    if (first == std::numeric_limits<int>::max()) return std::nullopt;
+    std::string text = first == rank_ ? *mine : std::string();
+    int length = static_cast<int>(text.size());
+    MPI_Bcast(&length, 1, MPI_INT, first, comm_);
+    text.resize(static_cast<std::size_t>(length));
+    MPI_Bcast(text.data(), length, MPI_CHAR, first, comm_);
+    return text;
+  }
   Eigen::VectorXd sum(const Eigen::VectorXd& own) const override {
     Eigen::VectorXd out(own.size());
     MPI_Allreduce(own.data(), out.data(), static_cast<int>(own.size()), MPI_DOUBLE, MPI_SUM, comm_);

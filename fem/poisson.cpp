@@ -161,7 +161,8 @@ void PoissonSolver::assemble() {
     linear.push_back(source.get());
   }
   LinearSystem& system = *sys_->system;
-  const AssemblyStats stats = assembler.assemble(bilinear, linear, system.sink());
+  AssemblyStats stats;
+  system.run_everywhere([&] { stats = assembler.assemble(bilinear, linear, system.sink()); });
   const AssemblyStats total = system.total(stats);  // a distributed system's ranks each took their own elements
   r_.domain_measure = total.measure;
   r_.quadrature_points = total.quadrature_points;
@@ -252,17 +253,23 @@ void PoissonSolver::errors() {
   const std::vector<char>* own = system.own_elements();
   if (exact && singular_) {
     // Compare with the mean-zero representative of the exact solution.
-    const Eigen::VectorXd mean = system.sum(norms.integrate(2, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
-      Eigen::VectorXd ue;
-      exact->values(ctx.geo.x, ue);
-      out(0) = ue.dot(ctx.weight);
-      out(1) = ctx.weight.sum();
-    }, 1, own));
+    Eigen::VectorXd mean;
+    system.run_everywhere([&] {
+      mean = norms.integrate(2, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+        Eigen::VectorXd ue;
+        exact->values(ctx.geo.x, ue);
+        out(0) = ue.dot(ctx.weight);
+        out(1) = ctx.weight.sum();
+      }, 1, own);
+    });
+    mean = system.sum(mean);
     exact = shifted_function(exact, -mean(0) / mean(1));
   }
   if (exact) {
     r_.error_quadrature = finer ? finer->name() : rules_.name();
-    r_.errors = error_norms(system.sum(error_squares(norms, r_.u, *exact, own)));
+    Eigen::Vector4d squares;
+    system.run_everywhere([&] { squares = error_squares(norms, r_.u, *exact, own); });
+    r_.errors = error_norms(system.sum(squares));
     if (!std::isfinite(r_.errors->l2) || !std::isfinite(r_.errors->h1) || !std::isfinite(r_.errors->l2_exact)) {
       throw NumericalError("the error norms against the exact solution are not finite (L2 " + std::to_string(r_.errors->l2) +
                            ", H1 " + std::to_string(r_.errors->h1) + "): does the exact solution overflow?");

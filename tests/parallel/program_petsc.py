@@ -73,6 +73,14 @@ for options, expect in (("-pc_type no_such_pc", "no_such_pc"), ("-ksp_max_it 2 -
     check(len(lines) == 1 and expect in lines[0] and lines[0].startswith("iga-poisson: error:"),
           f"{options}: stderr is not one line naming {expect}: {r.stderr!r}")
 
+# A failure on one rank's elements only (the source is infinite near x = 2): every rank stops, no rank waits in a
+# collective call for the one that gave up; one line, the expression's own message.
+r = run(mpirun + [exe, "--refine", "3", "--quiet", "--solver", "petsc", "--source", "x > 1.9 ? 1/0 : 1", "--vtu", "none",
+                  "--json", "none"])
+lines = r.stderr.strip().splitlines()
+check(r.returncode != 0 and len(lines) == 1 and "is infinite at" in lines[0],
+      f"a failure on one rank: exit {r.returncode}, stderr {r.stderr!r}")
+
 for f in failures:
     print("FAILED:", f)
 print(f"{0 if failures else 1} passed, {len(failures)} failed")
