@@ -387,7 +387,6 @@ void PetscSystem::reduce(const DirichletConditions& bc, Reduced& r) {
   check(MatCreate(comm_, r.t.out()), "MatCreate");
   check(MatSetSizes(r.t, static_cast<PetscInt>(hi_ - lo_), local_free, static_cast<PetscInt>(n), next), "MatSetSizes");
   check(MatSetType(r.t, MATAIJ), "MatSetType");
-  std::vector<Index> row_of(bc.dofs.size());
   Index most = 1;
   for (std::size_t k = 0; k < bc.dofs.size(); ++k) most = std::max<Index>(most, bc.coupling.row(static_cast<Index>(k)).nonZeros());
   check(MatSeqAIJSetPreallocation(r.t, static_cast<PetscInt>(most), nullptr), "MatSeqAIJSetPreallocation");
