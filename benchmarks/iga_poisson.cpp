@@ -582,6 +582,10 @@ int main(int argc, char** argv) {
       }
       if (ranks > 1 && o.threads == 0) o.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / ranks);
     }
-    return o.study.empty() ? run(o) : study(o);
+    const int code = iga::io::run_program("iga-poisson", [&] { return o.study.empty() ? run(o) : study(o); });
+    // mpirun ends the whole job at the first rank that exits non-zero: every rank waits here until rank 0 has
+    // written its lines (its error line included).
+    iga::fem::barrier();
+    return code;
   });
 }

@@ -68,6 +68,10 @@ Index sum_over_ranks(Index value) {
   return static_cast<Index>(out);
 }
 
+void barrier() {
+  if (session_open) MPI_Barrier(PETSC_COMM_WORLD);
+}
+
 double sum_over_ranks(double value) {
   if (!session_open) return value;
   double out = 0;

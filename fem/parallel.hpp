@@ -29,6 +29,8 @@ int ranks();
 double max_over_ranks(double value);
 Index sum_over_ranks(Index value);
 double sum_over_ranks(double value);
+/// Waits until every rank has come here (nothing without a session).
+void barrier();
 /// Every rank's value, on every rank (rank order).
 std::vector<Index> gather_over_ranks(Index value);
 
