@@ -8,7 +8,9 @@ build="${IGA_BUILD_DIR:-$root/build}"
 jobs="${IGA_JOBS:-$(nproc)}"
 
 packages=(
-  build-essential cmake
+  # Ninja builds (and ccache, when a build is repeated, e.g. CI on a fresh clone) are what README "Build times"
+  # measures.
+  build-essential cmake ninja-build ccache
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnlopt-cxx-dev libosd-dev libvtk9-dev
   libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev
   python3-matplotlib libbenchmark-dev
@@ -30,6 +32,6 @@ source "$root/scripts/packages.sh"
 install_packages setup "${packages[@]}"
 
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$build" -j "$jobs"

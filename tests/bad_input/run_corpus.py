@@ -41,6 +41,9 @@ import sys
 import tempfile
 from collections import defaultdict
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from shard import add_shard_option, take_share  # noqa: E402  (tests/support/shard.py)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 SRC = os.path.dirname(os.path.dirname(HERE))
 CRASH = re.compile(r"terminate called|Segmentation fault|AddressSanitizer|runtime error:|LeakSanitizer|"
@@ -167,6 +170,7 @@ def main():
     ap.add_argument("--memory-limit-mb", type=int, default=8192)
     ap.add_argument("--only", default="")
     ap.add_argument("--counts", action="store_true", help="print the number of cases per program and class")
+    add_shard_option(ap, "cases, in the order of the case files")
     args = ap.parse_args()
     exes = {name: os.path.abspath(path) for name, path in (e.split("=", 1) for e in args.exe)}
     cases = load_cases(args.only)
@@ -183,6 +187,7 @@ def main():
         print(f"| all | " + " | ".join(str(sum(r.get(c, 0) for r in table.values())) for c in classes) +
               f" | {len(cases)} |")
         return 0
+    cases = take_share(ap, args.shard, cases)
     failed = 0
     for file, name, case in cases:
         problems, _ = run_case(case, exes, args.memory_limit_mb)

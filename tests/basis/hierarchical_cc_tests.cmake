@@ -1,1 +1,2 @@
 iga_add_test(test_hierarchical_cc basis/test_hierarchical_cc.cpp)
+iga_add_slow_forms(test_hierarchical_cc)

@@ -2,6 +2,7 @@
 // Shared by the cap-mask tests (test_polyhedral_star.cpp, test_polyhedral_ngon.cpp): independent Bézier
 // evaluation of cap patches, the sector view of split caps, and reading the reference tables (which the
 // tests only read, and skip without).
+#include "support/paths.hpp"
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -126,7 +127,7 @@ double relative_surface_distance(const ConfigurationMask& first, const Configura
 }
 
 inline std::filesystem::path reference_tables() {
-  return std::filesystem::path(IGA_SOURCE_DIR "/../shared/reference/polyhedral") / "src" / "Patch" / "Table";
+  return std::filesystem::path(IGA_SOURCE_DIR) / ".." / "shared" / "reference" / "polyhedral" / "src" / "Patch" / "Table";
 }
 
 inline MatrixXd read_table(const std::filesystem::path& file) {

@@ -2,6 +2,7 @@
 // Small control nets with one polyhedral configuration each, built in code for the polyhedral tests, and the
 // location of the reference data (../shared/reference/polyhedral next to the repository, or
 // $IGA_POLYHEDRAL_REFERENCE), which tests read only and skip without.
+#include "support/paths.hpp"
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdlib>

@@ -8,7 +8,6 @@ if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/polyhedral_mask_tests.cmake)
 endif()
 # iga-geometry end to end (its .vtu read back with VTK).
 iga_add_test(test_iga_geometry tools/test_iga_geometry.cpp VTK::IOXML VTK::CommonDataModel VTK::CommonCore)
-target_compile_definitions(test_iga_geometry PRIVATE IGA_GEOMETRY_EXE="$<TARGET_FILE:iga-geometry>")
 add_dependencies(test_iga_geometry iga-geometry)
 iga_add_test(test_polyhedral_space basis/test_polyhedral_space.cpp)
 iga_add_test(test_polyhedral_poisson fem/test_polyhedral_poisson.cpp)

@@ -3,6 +3,7 @@
 // implementation by Bézier extraction), it contains the natural space, refinement is nested (exact
 // prolongation) also at extraordinary vertices, boundary EVs become interior EVs of the extended net, and bad
 // input is named.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

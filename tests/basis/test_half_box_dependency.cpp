@@ -2,6 +2,7 @@
 // (the dual of a torus triangulation with all valences 6) the alternating pattern is a null combination of
 // the 13 functions of every patch, so the space leaves one function out; the map and the solution space are
 // unchanged and the mass matrix becomes positive definite. Nets with odd faces keep all their functions.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

@@ -2,6 +2,7 @@
 // and for nets with a receding boundary alike. With random control points the refined geometry P·x must be the
 // same surface: the polynomial functionals ∫ det J (area) and ∫ z det J of the map are equal before and after
 // (both exact: geometric series at the EF elements), which they would not be for a different map.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <random>

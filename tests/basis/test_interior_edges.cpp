@@ -3,6 +3,7 @@
 // or 3 F; Euler's formula V − E + F = χ of the element mesh, χ from the surface's known topology), the two
 // ends of every piece mapped through a geometry to the same physical point (1e-12 of the domain size), and
 // the continuity values (bspline: degree − knot multiplicity; cc: 1 at EVs, 2 elsewhere).
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>

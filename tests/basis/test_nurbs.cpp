@@ -1,5 +1,6 @@
 // NURBS patches: the rational basis against its definition (Cox–de Boor B-splines, weights, the quotient), exact
 // circles, refinement with weights, and the JSON patch format (round trip and refusals).
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,7 @@
 // The backend registry (basis/registry.hpp): every backend is built from a net and refined through the
 // registry alone; options a backend does not take are errors; uniform B-spline refinement through the
 // registry equals the refine-and-smooth algorithm's.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <numbers>

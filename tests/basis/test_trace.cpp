@@ -3,6 +3,7 @@
 // B-spline of the boundary polygon with interpolated corners (Catmull–Clark, OpenSubdiv's boundary rule), the
 // surface functions evaluated on the sides (every backend, through the restriction map R, which carries the
 // dependent traces of polyhedral and half-box splines), and closed forms (perimeter, area, corner angles).
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>

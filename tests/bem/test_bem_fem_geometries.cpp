@@ -1,6 +1,7 @@
 // bem on the boundaries of FEM geometries (basis::trace_geometry): free terms at the corners of Catmull–Clark and
 // B-spline domains, the patch test on a B-spline geometry, convergence on a Catmull–Clark domain with corners
 // and three holes under mixed conditions.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // bench-bem end to end (quick variant of the benchmarks/README.md run): its JSON rows, the condition estimate
 // growing like 1/h, the flux error falling, GMRES agreeing with LU on the error.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 

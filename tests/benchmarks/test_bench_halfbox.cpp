@@ -1,5 +1,6 @@
 // bench-halfbox --quick end to end: exit code 0, and a JSON report with every figure of the benchmark present
 // as a finite positive number (timings and rates cannot be compared with fixed values; counts can).
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 

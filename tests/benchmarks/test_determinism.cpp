@@ -6,6 +6,7 @@
 // OpenBLAS's threads (issue 17), whose blocked factorisation inside CHOLMOD rounds differently with 1 and 2
 // threads: the solution and the errors agree to 1e-12 relative (measured 9e-14 on square_evs), not bit for bit.
 // iga-bem: the same, runs twice and 1 against 2 threads (no sum crosses threads there).
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 

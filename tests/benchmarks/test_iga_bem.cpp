@@ -1,5 +1,6 @@
 // iga-bem end to end: the boundary and interior .vtu read back with VTK, the JSON report, agreement with the FEM
 // on the same geometry, one clear error line on bad input.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <vtkCellType.h>

@@ -1,4 +1,5 @@
 // iga-poisson end to end: the .vtu read back with VTK's XML reader, the JSON report, one clear error line.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <numbers>

@@ -1,4 +1,5 @@
 // iga-quadrature end to end: exact and quadrature areas/volumes of the project's nets, JSON, errors.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 

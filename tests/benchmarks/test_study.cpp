@@ -2,6 +2,7 @@
 // the per-level errors against separate single runs (the same code path, so equal to 1e-12), the CSV, the .pvd,
 // the fitted rates against the theory, the plots (PNG signature, SVG parsed as XML), and what happens without
 // python3/matplotlib or with bad options.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <numbers>

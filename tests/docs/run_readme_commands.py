@@ -26,6 +26,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from shard import add_shard_option, take_share  # noqa: E402  (tests/support/shard.py)
+
 # The README's mpirun commands as a user types them: Open MPI's own switches for running as root (CI does) and for
 # more ranks than cores, set through its environment instead of the command line.
 MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -82,11 +85,15 @@ def main():
     ap.add_argument("--build-dir", required=True, help="what build/ in the README stands for")
     ap.add_argument("--timeout", type=float, default=120, help="seconds per command")
     ap.add_argument("--list", action="store_true", help="print the commands that would run and exit")
+    add_shard_option(ap, "command groups (a group's commands share a folder, so a group is never split)")
     args = ap.parse_args()
     build = os.path.abspath(args.build_dir)
     name = os.path.basename(args.readme)
     with open(args.readme, encoding="utf-8") as f:
         found = commands(f.read().splitlines())
+    groups = sorted({g for g, _, _ in found}, key=lambda g: min(num for gg, num, _ in found if gg == g))
+    mine = set(take_share(ap, args.shard, groups))
+    found = [c for c in found if c[0] in mine]
     if args.list:
         for _, number, command in found:
             print(f"{name}:{number}: {command}")

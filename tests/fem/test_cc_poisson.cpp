@@ -1,5 +1,6 @@
 // Catmull–Clark elements through the whole pipeline: areas of the project's nets (per-tile quadrature vs
 // closed forms), the thesis §4.2.2 benchmarks, Laplace–Beltrami on closed surfaces.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -159,20 +160,21 @@ TEST(CatmullClarkPoisson, ThesisPoissonBenchmarkRates) {
 namespace {
 // d_l = ||P u_l − u_{l+1}||_L2 on level l + 1 for levels 1..4 of `coarse` (P the exact prolongation; one level at a
 // time, so the nets are numbered consistently).
+// d_l = ||P u_l − u_{l+1}||_L2 for l = first .. last − 1.
 std::vector<double> self_convergence(const basis::Geometry& coarse, const fem::PoissonProblem& p,
-                                     const quadrature::RuleProvider& rules) {
+                                     const quadrature::RuleProvider& rules, int first = 1, int last = 4) {
   std::vector<double> diffs;
   Eigen::VectorXd previous;
-  basis::Geometry g = refine::refine_uniform(coarse, 1).geometry;
-  for (int level = 1; level <= 4; ++level) {
+  basis::Geometry g = refine::refine_uniform(coarse, first).geometry;
+  for (int level = first; level <= last; ++level) {
     Eigen::SparseMatrix<double> prolongation;
-    if (level > 1) {
+    if (level > first) {
       refine::Refinement step = refine::refine_uniform(g, 1);
       g = step.geometry;
       prolongation = step.prolongation;
     }
     const fem::PoissonResult r = fem::solve_poisson(g, rules, p);
-    if (level > 1) {
+    if (level > first) {
       const Eigen::VectorXd e = prolongation * previous - r.u;
       const fem::MassForm mass;
       const std::vector<const fem::BilinearForm*> bm{&mass};
@@ -343,15 +345,24 @@ TEST(CatmullClarkPoisson, ClampedBoundaryWithNitscheAtBoundaryEVs) {
 
 // The EV remedy on square_evs.obj (after its global step: interior EVs of valence 5 (three) and 6, one of valence
 // 3 that keeps full order unenriched, and the boundary EV with 3 faces, valence 5 once extended): the clamped
-// boundary, Nitsche, and --cc-enrich quadratic at those five;
-// rates of u = sin πx sin πy + x y² and benchmark (ii), tiles:4:8, fitted over levels 2..4. Measured (2026-12-02): L2 3.72 / H1 2.67 and (ii) L2 3.50
-// / H1 2.76 (without the enrichment: 2.43 / 1.63 and 2.41 / 1.52, above); asserted with floors 0.1 below.
-TEST(CatmullClarkPoisson, EnrichedExtraordinaryVerticesOnSquareEvs) {
+// boundary, Nitsche, and --cc-enrich quadratic at those five; rates of u = sin πx sin πy + x y² and benchmark (ii),
+// tiles:4:8. The full form (label slow, 25 s) fits over levels 2..4 and has the patch test at levels 1 and 3; the
+// quick form (the default run) fits over levels 1..3 and has the patch test at level 1.
+// Measured (2026-12-02), levels 2..4: L2 3.72 / H1 2.67 and (ii) L2 3.50 / H1 2.76 (without the enrichment: 2.43 /
+// 1.63 and 2.41 / 1.52, above); asserted with floors 0.1 below. Levels 1..3 (measured 2026-12-04): L2 2.82 / H1
+// 2.02 and (ii) L2 3.27 / H1 2.49, still before the asymptotic range; asserted with floors 0.1 below. The quick form
+// is a regression check of these rates; the gain of the enrichment is asserted by the full form (and, in the
+// default run, on the planar fans of CatmullClarkEvRates.QuadraticEnrichmentRestoresTheRates).
+namespace {
+struct EnrichedRates {
+  Rates a, b;
+};
+EnrichedRates enriched_square_evs(int first, int last, const std::vector<int>& patch_levels) {
   fem::PoissonProblem a = sine_plus_cubic(), b = benchmark_ii();
   a.dirichlet_method = b.dirichlet_method = fem::DirichletMethod::kNitsche;
   const basis::Geometry plain = clamped(net("square_evs.obj"));
   const auto centres = basis::catmull_clark::extraordinary_centres(plain);
-  ASSERT_EQ(centres.size(), 5u);  // after the net's global step: four interior valence-5/6 EVs and the boundary EV
+  EXPECT_EQ(centres.size(), 5u);  // after the net's global step: four interior valence-5/6 EVs and the boundary EV
   const basis::Geometry g = basis::catmull_clark::enriched_geometry(plain, centres);
   // The space contains the linear functions; the patch test holds up to the quadrature of the enrichment
   // functions, which are not polynomial on the elements (measured with tiles:8:12: 6.7e-10 at level 1,
@@ -360,42 +371,74 @@ TEST(CatmullClarkPoisson, EnrichedExtraordinaryVerticesOnSquareEvs) {
   affine.exact = std::make_shared<fem::Expression>("1 + x - 2*y", "--exact");
   affine.dirichlet = affine.exact;
   affine.dirichlet_method = fem::DirichletMethod::kNitsche;
-  for (int level : {1, 3}) {
+  for (int level : patch_levels) {
     const fem::PoissonResult e = fem::solve_poisson(refine::refine_uniform(g, level).geometry, quadrature::PerTile(8, 12), affine);
     EXPECT_LE(e.errors->l2 / e.errors->l2_exact, level == 1 ? 1e-9 : 1e-10) << level;
   }
-  const Rates ra = rates(g, a, 2, 4, quadrature::PerTile(4, 8)), rb = rates(g, b, 2, 4, quadrature::PerTile(4, 8));
-  std::cout << "clamped + Nitsche + enriched, square_evs: sine + x y^2 L2 " << ra.l2 << " H1 " << ra.h1 << "; (ii) L2 "
-            << rb.l2 << " H1 " << rb.h1 << "\n";
-  EXPECT_GE(ra.l2, 3.6);
-  EXPECT_GE(ra.h1, 2.55);
-  EXPECT_GE(rb.l2, 3.4);
-  EXPECT_GE(rb.h1, 2.65);
+  const EnrichedRates r{rates(g, a, first, last, quadrature::PerTile(4, 8)),
+                        rates(g, b, first, last, quadrature::PerTile(4, 8))};
+  std::cout << "clamped + Nitsche + enriched, square_evs, levels " << first << ".." << last << ": sine + x y^2 L2 "
+            << r.a.l2 << " H1 " << r.a.h1 << "; (ii) L2 " << r.b.l2 << " H1 " << r.b.h1 << "\n";
+  return r;
+}
+}  // namespace
+
+TEST(CatmullClarkPoissonSlow, EnrichedExtraordinaryVerticesOnSquareEvs) {
+  const EnrichedRates r = enriched_square_evs(2, 4, {1, 3});
+  EXPECT_GE(r.a.l2, 3.6);
+  EXPECT_GE(r.a.h1, 2.55);
+  EXPECT_GE(r.b.l2, 3.4);
+  EXPECT_GE(r.b.h1, 2.65);
+}
+
+TEST(CatmullClarkPoisson, EnrichedExtraordinaryVerticesOnSquareEvsQuick) {
+  const EnrichedRates r = enriched_square_evs(1, 3, {1});
+  EXPECT_GE(r.a.l2, 2.7);
+  EXPECT_GE(r.a.h1, 1.9);
+  EXPECT_GE(r.b.l2, 3.15);
+  EXPECT_GE(r.b.h1, 2.4);
 }
 
 // Laplace–Beltrami on a closed surface with EVs, before and after the EV remedy: torus_evs.obj (EVs of valence 3
-// and 5), −Δ_Γ u + u = x + y z + 1, self-convergence d_l = ||P u_l − u_{l+1}||_L2 over levels 1..4 (tiles:4:8);
-// the enrichment uses the EVs' tangent planes (the four of valence 5; valence 3 gets none). Measured (2026-12-02):
-// the last two rates 2.91, 2.76 without and 2.77, 3.70 with the enrichment; asserted: the last one >= 2.6 and
-// >= 3.5.
-TEST(CatmullClarkPoisson, LaplaceBeltramiOnTorusBeforeAndAfterEnrichment) {
+// and 5), −Δ_Γ u + u = x + y z + 1, self-convergence d_l = ||P u_l − u_{l+1}||_L2 (tiles:4:8); the enrichment uses
+// the EVs' tangent planes (the four of valence 5; valence 3 gets none). The full form (label slow, 44 s) takes
+// levels 1..4; measured (2026-12-02): the last two rates 2.91, 2.76 without and 2.77, 3.70 with the enrichment;
+// asserted: the last one >= 2.6 and >= 3.5. The quick form (the default run) takes levels 0..3; measured
+// (2026-12-04): 3.24, 2.91 without and 3.39, 2.77 with the enrichment, so the enrichment's gain does not show yet
+// at these levels; asserted: both last rates 0.1 below the measured ones (a regression check of the convergence
+// on a closed surface with EVs; the gain is asserted by the full form).
+namespace {
+std::pair<std::pair<double, double>, std::pair<double, double>> torus_rates(int first, int last) {
   const basis::Geometry plain = basis::catmull_clark::make_catmull_clark_geometry(net("torus_evs.obj"));
   const auto centres = basis::catmull_clark::extraordinary_centres(plain);
-  ASSERT_FALSE(centres.empty());
+  EXPECT_FALSE(centres.empty());
   fem::PoissonProblem p;
   p.source = std::make_shared<fem::Expression>("x + y*z + 1", "--source");
   p.reaction = 1.0;
   const quadrature::PerTile rules(4, 8);
   auto self_rates = [&](const basis::Geometry& coarse) {
-    const std::vector<double> d = self_convergence(coarse, p, rules);
+    const std::vector<double> d = self_convergence(coarse, p, rules, first, last);
     return std::make_pair(std::log2(d[0] / d[1]), std::log2(d[1] / d[2]));
   };
   const auto before = self_rates(plain);
   const auto after = self_rates(basis::catmull_clark::enriched_geometry(plain, centres));
-  std::cout << "torus_evs Laplace-Beltrami self-convergence rates: plain " << before.first << ", " << before.second
-            << "; enriched (" << centres.size() << " EVs) " << after.first << ", " << after.second << "\n";
+  std::cout << "torus_evs Laplace-Beltrami self-convergence rates, levels " << first << ".." << last << ": plain "
+            << before.first << ", " << before.second << "; enriched (" << centres.size() << " EVs) " << after.first
+            << ", " << after.second << "\n";
+  return {before, after};
+}
+}  // namespace
+
+TEST(CatmullClarkPoissonSlow, LaplaceBeltramiOnTorusBeforeAndAfterEnrichment) {
+  const auto [before, after] = torus_rates(1, 4);
   EXPECT_GE(before.second, 2.6);
   EXPECT_GE(after.second, 3.5);
+}
+
+TEST(CatmullClarkPoisson, LaplaceBeltramiOnTorusBeforeAndAfterEnrichmentQuick) {
+  const auto [before, after] = torus_rates(0, 3);
+  EXPECT_GE(before.second, 2.8);
+  EXPECT_GE(after.second, 2.65);
 }
 
 // The clamped boundary EV is an interior vertex of the extended net but its ring of elements is open in the

@@ -2,6 +2,7 @@
 // the patch test on planar three-valent nets made from triangulations by the dual construction (pentagons and
 // heptagons inside, a receding boundary with coupled Dirichlet constraints), the convergence rate of a smooth
 // manufactured solution under refinement, and self-convergence of Laplace–Beltrami on a closed surface.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,7 @@
 // Polyhedral splines through the whole pipeline (basis/polyhedral/space.hpp + fem::solve_poisson): the
 // patch test (an affine solution is reproduced, also through the coupled Dirichlet constraints of the
 // receding boundary) and convergence under Catmull–Clark refinement of the net (the spaces are not nested).
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include "basis/polyhedral/configuration.hpp"

@@ -2,6 +2,7 @@
 // Laplacians on a curved planar map, the Laplace–Beltrami operator on surfaces. References: central
 // differences of the first-derivative pipeline (independent code path), exactly reproduced functions, and the
 // closed-form mean-curvature vector of a polynomial graph.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <numbers>

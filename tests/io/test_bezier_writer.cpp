@@ -1,5 +1,6 @@
 // Tests of io::write_bezier (Bézier VTU output), read back with VTK's reader and evaluated with VTK's own Bézier
 // cells: exact (1e-12 relative) on polynomial elements, no cracks (shared corner points) everywhere.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 #include <vtkBezierCurve.h>
 #include <vtkBezierQuadrilateral.h>

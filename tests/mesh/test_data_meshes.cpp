@@ -1,5 +1,6 @@
 // The project's own control nets under data/meshes/ (made by tools/make_meshes.py) load and have the
 // topology they are made for: Euler characteristic, boundary loops, valences of their EVs.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <set>

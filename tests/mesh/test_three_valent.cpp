@@ -2,6 +2,7 @@
 // Counts are checked against closed forms in the input's V, E, F and boundary edges B (mesh/three_valent.hpp);
 // positions against exact values (centroids of an equilateral lattice, trisection points of integer
 // triangles, midpoints on the square's sides).
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

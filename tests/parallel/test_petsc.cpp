@@ -3,6 +3,7 @@
 // assembled matrix entry by entry, the solution against CHOLMOD's for every backend with Dirichlet and Neumann
 // parts and the coupled constraints of receding boundaries, convergence rates, and failures as one exception on
 // every rank. Every rank runs every test; rank 0 prints.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

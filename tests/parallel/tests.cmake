@@ -4,7 +4,6 @@
 add_executable(test_petsc ${CMAKE_CURRENT_LIST_DIR}/test_petsc.cpp)
 target_compile_options(test_petsc PRIVATE ${IGA_WARNINGS})
 target_link_libraries(test_petsc PRIVATE iga::iga GTest::gtest)
-target_compile_definitions(test_petsc PRIVATE IGA_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 target_include_directories(test_petsc PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 add_test(NAME petsc_1_rank COMMAND test_petsc)
 foreach(n 2 3)

@@ -2,6 +2,7 @@
 // planar "wheel" nets whose limit boundary is a known regular n-gon (∫ det J depends only on the boundary, so
 // interior control points may be moved freely), a square with boundary EVs, and closed surfaces against
 // per-tile Gauss quadrature with growing numbers of levels.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,6 +2,7 @@
 // (quadrature/exact/subdivision_integrals.hpp, basis/half_box/exact_view.hpp): element integrals against
 // partition of unity and a deep per-tile rule, the exact area of planar nets against Green's theorem on the
 // boundary curves, and exact area and volume against the per-tile rule at 16 levels.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,6 @@
 // Moment-fitted rules (quadrature/moment_fit): every stored table re-verified against the moments, a small
 // fit from a fixed seed, the table format and its errors, the Fitted provider.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,6 +2,7 @@
 // from the build tree: $IGA_QUADRATURE_DIR first and as given; otherwise the repository's data/quadrature,
 // through the marker file next to the build tree's libiga_quadrature.so. (The installed and moved library is
 // checked by external_consumer, tests/consumer/run.cmake.)
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cstdlib>

@@ -1,6 +1,7 @@
 // The adaptive loop on the L-shaped domain with the corner singularity u = r^(2/3) sin(2φ/3) (fem problem
 // "corner", domain basis::bspline::make_l_shape): THB refinement by the residual estimator and Dörfler marking
 // against uniform refinement; the estimator's efficiency index; the local patch test; marking.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>

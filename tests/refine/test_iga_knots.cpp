@@ -1,5 +1,6 @@
 // iga-knots end to end: a round trip (file in, --out file, read back, compared with the library's Boehm) and
 // one clear line with a non-zero exit code for each kind of invalid input.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -2,6 +2,5 @@
 iga_add_test(test_knot_insertion refine/test_knot_insertion.cpp)
 iga_add_test(test_refine_smooth refine/test_refine_smooth.cpp)
 iga_add_test(test_iga_knots refine/test_iga_knots.cpp)
-target_compile_definitions(test_iga_knots PRIVATE IGA_KNOTS_EXE="$<TARGET_FILE:iga-knots>")
 add_dependencies(test_iga_knots iga-knots)
 iga_add_test(test_adaptive refine/test_adaptive.cpp)

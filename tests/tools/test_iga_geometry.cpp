@@ -1,6 +1,7 @@
 // iga-geometry end to end: JSON counts, the .bv read back with io/bv and checked against closed forms (corner
 // and centre BB coefficients of bi-2 patches, corner interpolation of open B-splines, Catmull–Clark limit
 // points), the .vtu read back with VTK, and one clear error line with a non-zero exit on bad input.
+#include "support/paths.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <vtkPointData.h>
