@@ -40,11 +40,23 @@ void parallel_for(Index n, Body&& body) {
 }  // namespace
 
 namespace {
-// ctx.laplacian (and, planar, ctx.hessian) from the parametric first and second derivatives of the functions and
-// the map, for all points at once.
-void prepare_second_derivatives(ElementContext& ctx) {
-  const basis::GeometryValues& g = ctx.geo;
-  const Eigen::Index q = ctx.num_points();
+// Physical gradients (nloc × dim·q, blocks per component) from the parametric ones and the gradient transform.
+void physical_gradients(const basis::BasisValues& b, const basis::GeometryValues& g, int dim, Eigen::MatrixXd& grad) {
+  const Eigen::Index q = b.value.cols();
+  grad.resize(b.value.rows(), dim * q);
+  thread_local Eigen::RowVectorXd tu, tv;  // row c of T, contiguous (a row of the 3 × q blocks is strided)
+  for (int c = 0; c < dim; ++c) {
+    tu = g.tu.row(c);
+    tv = g.tv.row(c);
+    grad.middleCols(c * q, q) = b.du.array().rowwise() * tu.array() + b.dv.array().rowwise() * tv.array();
+  }
+}
+
+// The Laplacians (and, planar, the Hessians) from the parametric first and second derivatives of the functions
+// and the map, for all points at once; grad as physical_gradients gives it.
+void second_derivatives(const basis::BasisValues& b, const basis::GeometryValues& g, int dim,
+                        const Eigen::MatrixXd& grad, Eigen::MatrixXd& laplacian, Eigen::MatrixXd& hessian) {
+  const Eigen::Index q = b.value.cols();
   thread_local Eigen::ArrayXXd m;  // rows: g11, g12, g22, inverse metric, Christoffel contractions
   m.resize(8, q);
   m.row(0) = g.xu.colwise().squaredNorm().array();
@@ -60,41 +72,63 @@ void prepare_second_derivatives(ElementContext& ctx) {
   const Eigen::ArrayXXd cv = m.row(3) * dot(g.xv, g.xuu) + 2 * m.row(4) * dot(g.xv, g.xuv) + m.row(5) * dot(g.xv, g.xvv);
   m.row(6) = m.row(3) * cu + m.row(4) * cv;  // coefficient of φ_u
   m.row(7) = m.row(4) * cu + m.row(5) * cv;  // coefficient of φ_v
-  const basis::BasisValues& b = ctx.basis;
-  ctx.laplacian = (b.duu.array().rowwise() * m.row(3) + b.duv.array().rowwise() * (2 * m.row(4)) +
+  laplacian = (b.duu.array().rowwise() * m.row(3) + b.duv.array().rowwise() * (2 * m.row(4)) +
                    b.dvv.array().rowwise() * m.row(5) - b.du.array().rowwise() * m.row(6) -
                    b.dv.array().rowwise() * m.row(7)).matrix();
-  if (ctx.dim != 2) {
-    ctx.hessian.resize(0, 0);
+  if (dim != 2) {
+    hessian.resize(0, 0);
     return;
   }
   // M_ij = φ_{,ij} − ∇_x φ · x_{,ij}; H_ab = Σ_ij K_ia M_ij K_jb with K = J^{-1}: K_ua = tu(a), K_va = tv(a).
   const Eigen::Index n = b.value.rows();
   thread_local Eigen::ArrayXXd muu, muv, mvv;
-  const auto gx = ctx.grad_component(0).array();
-  const auto gy = ctx.grad_component(1).array();
+  const auto gx = grad.middleCols(0, q).array();
+  const auto gy = grad.middleCols(q, q).array();
   muu = b.duu.array() - gx.rowwise() * g.xuu.row(0).array() - gy.rowwise() * g.xuu.row(1).array();
   muv = b.duv.array() - gx.rowwise() * g.xuv.row(0).array() - gy.rowwise() * g.xuv.row(1).array();
   mvv = b.dvv.array() - gx.rowwise() * g.xvv.row(0).array() - gy.rowwise() * g.xvv.row(1).array();
-  ctx.hessian.resize(n, 3 * q);
+  hessian.resize(n, 3 * q);
   const int ab[3][2] = {{0, 0}, {0, 1}, {1, 1}};
   for (int k = 0; k < 3; ++k) {
     const auto ua = g.tu.row(ab[k][0]).array(), va = g.tv.row(ab[k][0]).array();
     const auto ub = g.tu.row(ab[k][1]).array(), vb = g.tv.row(ab[k][1]).array();
-    ctx.hessian.middleCols(k * q, q) = (muu.rowwise() * (ua * ub) + muv.rowwise() * (ua * vb + va * ub) +
+    hessian.middleCols(k * q, q) = (muu.rowwise() * (ua * ub) + muv.rowwise() * (ua * vb + va * ub) +
                                         mvv.rowwise() * (va * vb)).matrix();
   }
 }
 }  // namespace
 
-Assembler::Assembler(const basis::Geometry& geometry, const quadrature::RuleProvider& rules)
-    : geometry_(geometry), rules_(rules) {}
+Assembler::Assembler(const basis::Geometry& geometry, const quadrature::RuleProvider& rules, int components)
+    : geometry_(geometry), rules_(rules), components_(components) {
+  if (components < 1) throw InputError("assembler: components must be >= 1, got " + std::to_string(components));
+}
+
+void Assembler::field_dofs(Index e, std::vector<Index>& out) const {
+  const auto dofs = geometry_.space().dofs(e);
+  const Index d = components_;
+  out.resize(dofs.size() * static_cast<std::size_t>(d));
+  for (std::size_t a = 0; a < dofs.size(); ++a) {
+    for (Index c = 0; c < d; ++c) out[a * static_cast<std::size_t>(d) + static_cast<std::size_t>(c)] = d * dofs[a] + c;
+  }
+}
+
+int Assembler::needs(std::span<const FormNeeds* const> forms) const {
+  int needed = 1;
+  for (const FormNeeds* form : forms) {
+    if (form->components() != components_) {
+      throw InputError("assembler: a form for " + std::to_string(form->components()) +
+                       " component(s) given to the loop of a field with " + std::to_string(components_));
+    }
+    needed = std::max(needed, form->derivatives());
+  }
+  return needed;
+}
 
 const AssemblyPlan& Assembler::plan(bool with_pattern) const {
-  const bool pattern_missing = plan_ && with_pattern && plan_->pattern.rows() != geometry_.space().num_dofs();
+  const bool pattern_missing = plan_ && with_pattern && plan_->pattern.rows() != num_dofs();
   if (!plan_ || pattern_missing) {
     // Swap, not move: Eigen 3.4's SparseMatrix has no move constructor and would be copied.
-    AssemblyPlan made = make_assembly_plan(geometry_.space(), with_pattern);
+    AssemblyPlan made = make_assembly_plan(geometry_.space(), with_pattern, components_);
     if (!plan_) plan_ = std::make_unique<AssemblyPlan>();
     plan_->pattern.swap(made.pattern);
     plan_->colors.swap(made.colors);
@@ -115,17 +149,9 @@ void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
   evaluate_basis(e, ctx);
   geometry_.evaluate(e, ctx.basis, ctx.geo, true, derivatives);
   ctx.weight = ctx.rule->weights.cwiseProduct(ctx.geo.measure);
-  const Eigen::Index q = ctx.rule->size();
-  ctx.grad.resize(ctx.basis.value.rows(), ctx.dim * q);
-  thread_local Eigen::RowVectorXd tu, tv;  // row c of T, contiguous (a row of the 3 × q blocks is strided)
-  for (int c = 0; c < ctx.dim; ++c) {
-    tu = ctx.geo.tu.row(c);
-    tv = ctx.geo.tv.row(c);
-    ctx.grad.middleCols(c * q, q) =
-        ctx.basis.du.array().rowwise() * tu.array() + ctx.basis.dv.array().rowwise() * tv.array();
-  }
+  physical_gradients(ctx.basis, ctx.geo, ctx.dim, ctx.grad);
   if (derivatives >= 2) {
-    prepare_second_derivatives(ctx);
+    second_derivatives(ctx.basis, ctx.geo, ctx.dim, ctx.grad, ctx.laplacian, ctx.hessian);
   } else {
     ctx.laplacian.resize(0, 0);  // nothing stale from an earlier call with 2
     ctx.hessian.resize(0, 0);
@@ -172,6 +198,9 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
   std::vector<Eigen::MatrixXd> mats(contexts.size());
   std::vector<Eigen::VectorXd> vecs(contexts.size());
   std::vector<Index> taken;
+  std::vector<const FormNeeds*> forms(bilinear.begin(), bilinear.end());
+  forms.insert(forms.end(), linear.begin(), linear.end());
+  const int needed = needs(forms);  // the update flags: the largest order any form asks for
   for (const std::vector<Index>& colour : p.colors) {
     taken.clear();
     for (Index e : colour) {
@@ -181,8 +210,13 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
       const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
       ElementContext& ctx = contexts[t];
       const Index e = taken[static_cast<std::size_t>(i)];
-      prepare(e, ctx);
-      const auto dofs = space.dofs(e);
+      prepare(e, ctx, needed);
+      thread_local std::vector<Index> expanded;
+      std::span<const Index> dofs = space.dofs(e);
+      if (components_ > 1) {
+        field_dofs(e, expanded);
+        dofs = expanded;
+      }
       const Index nloc = static_cast<Index>(dofs.size());
       Eigen::MatrixXd& k = mats[t];
       Eigen::VectorXd& f = vecs[t];
@@ -208,15 +242,21 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
                                   const BoundaryLinearForm* linear, Eigen::SparseMatrix<double>* a,
                                   Eigen::VectorXd* b) const {
   const basis::Space& space = geometry_.space();
-  const Index n = space.num_dofs();
+  const Index n = num_dofs();
   std::vector<Eigen::Triplet<double>> entries;
   if (b) *b = Eigen::VectorXd::Zero(n);
   BoundaryContext ctx;
   Eigen::MatrixXd k;
   Eigen::VectorXd f;
+  std::vector<const FormNeeds*> forms;
+  if (bilinear && a) forms.push_back(bilinear);
+  if (linear && b) forms.push_back(linear);
+  const int needed = needs(forms);
+  std::vector<Index> dofs;
   for (const basis::BoundaryEdge& edge : edges) {
-    prepare_side(edge.element, edge.side, 0.0, 1.0, rules_.side_rule(space.kind(edge.element), edge.side), ctx);
-    const auto dofs = space.dofs(edge.element);
+    prepare_side(edge.element, edge.side, 0.0, 1.0, rules_.side_rule(space.kind(edge.element), edge.side), ctx,
+                 needed);
+    field_dofs(edge.element, dofs);
     const Index nloc = static_cast<Index>(dofs.size());
     if (bilinear && a) {
       k.setZero(nloc, nloc);
@@ -240,7 +280,10 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
 }
 
 void Assembler::prepare_side(Index e, int side, double t0, double t1, const quadrature::Rule1D& line,
-                             BoundaryContext& ctx) const {
+                             BoundaryContext& ctx, int derivatives) const {
+  if (derivatives != 1 && derivatives != 2) {
+    throw InputError("side context: derivatives must be 1 or 2, got " + std::to_string(derivatives));
+  }
   const basis::Space& space = geometry_.space();
   const basis::Shape shape = space.kind(e).shape;
   const Index q = line.size();
@@ -250,8 +293,14 @@ void Assembler::prepare_side(Index e, int side, double t0, double t1, const quad
   const Eigen::Vector2d dt = basis::side_tangent(shape, side) * (t1 - t0);
   ctx.element = e;
   ctx.side = side;
-  space.evaluate(e, pts, 1, ctx.basis);
-  geometry_.evaluate(e, ctx.basis, ctx.geo, false);
+  ctx.dim = geometry_.dim();
+  ctx.derivatives = derivatives;
+  space.evaluate(e, pts, derivatives, ctx.basis);
+  geometry_.evaluate(e, ctx.basis, ctx.geo, false, derivatives);
+  if (derivatives >= 2) {
+    physical_gradients(ctx.basis, ctx.geo, ctx.dim, ctx.grad);
+    second_derivatives(ctx.basis, ctx.geo, ctx.dim, ctx.grad, ctx.laplacian, ctx.hessian);
+  }
   ctx.weight.resize(q);
   ctx.conormal.resize(3, q);
   for (Index i = 0; i < q; ++i) {

@@ -27,15 +27,24 @@ struct AssemblyStats {
 class Assembler {
  public:
   /// Keeps references to geometry and rules (they must outlive the assembler). The plan is built lazily.
-  Assembler(const basis::Geometry& geometry, const quadrature::RuleProvider& rules);
+  /// components = d: the unknown is a field of d components over the geometry's scalar space (DESIGN.md item 2),
+  /// its dofs interleaved (d·i + c: component c of function i; make_assembly_plan), and forms must say they are
+  /// written for d components (FormNeeds::components()). 1: a scalar field.
+  Assembler(const basis::Geometry& geometry, const quadrature::RuleProvider& rules, int components = 1);
 
   const basis::Geometry& geometry() const { return geometry_; }
   const quadrature::RuleProvider& rules() const { return rules_; }
+  int components() const { return components_; }
+  /// The field's dofs: components() × the space's.
+  Index num_dofs() const { return components_ * geometry_.space().num_dofs(); }
+  /// Element e's field dofs in the local order of the forms' matrices: d·dofs(e)[a] + c at d·a + c.
+  void field_dofs(Index e, std::vector<Index>& out) const;
   /// with_pattern = false: the colouring alone (the pattern stays 0 × 0 until a call asks for it), for a sink
   /// with its own pattern.
   const AssemblyPlan& plan(bool with_pattern = true) const;
 
-  /// A = sum of the bilinear forms, b = sum of the linear forms, in one loop over the elements.
+  /// A = sum of the bilinear forms, b = sum of the linear forms, in one loop over the elements, each element
+  /// prepared to the largest derivative order the forms ask for (FormNeeds).
   /// A gets the plan's pattern; b has num_dofs entries. Deterministic for any thread count.
   AssemblyStats assemble(std::span<const BilinearForm* const> bilinear, std::span<const LinearForm* const> linear,
                          Eigen::SparseMatrix<double>& a, Eigen::VectorXd& b) const;
@@ -44,8 +53,8 @@ class Assembler {
   AssemblyStats assemble(std::span<const BilinearForm* const> bilinear, std::span<const LinearForm* const> linear,
                          SystemSink& sink) const;
 
-  /// Boundary integrals over `edges` (serial; boundaries are small): a (num_dofs², may be null) and
-  /// b (num_dofs, may be null) are overwritten.
+  /// Boundary integrals over `edges` (serial; boundaries are small), each side prepared to the order the forms
+  /// ask for: a (num_dofs()², may be null) and b (num_dofs(), may be null) are overwritten.
   void assemble_boundary(std::span<const basis::BoundaryEdge> edges, const BoundaryBilinearForm* bilinear,
                          const BoundaryLinearForm* linear, Eigen::SparseMatrix<double>* a,
                          Eigen::VectorXd* b) const;
@@ -66,7 +75,9 @@ class Assembler {
   /// Fills ctx on the piece [t0, t1] of side `side` of element e (side parameter, side_point conventions) at the
   /// points s of `line` on [0, 1] (side parameter t0 + s (t1 - t0)): basis with first derivatives, geometry
   /// (unchecked), weight = line weight × |dx/ds|, outward conormal. The whole side is t0 = 0, t1 = 1.
-  void prepare_side(Index e, int side, double t0, double t1, const quadrature::Rule1D& line, BoundaryContext& ctx) const;
+  /// derivatives = 2: also ctx.grad, ctx.laplacian and (planar) ctx.hessian, as prepare() gives them.
+  void prepare_side(Index e, int side, double t0, double t1, const quadrature::Rule1D& line, BoundaryContext& ctx,
+                    int derivatives = 1) const;
 
   /// Fills ctx for element e at its rule's points (basis with first derivatives, geometry, weights,
   /// physical gradients; with derivatives = 2 also ctx.laplacian and, planar, ctx.hessian — update flags in the
@@ -79,8 +90,12 @@ class Assembler {
   /// derivative order.
   void evaluate_basis(Index e, ElementContext& ctx) const;
 
+  /// The largest derivative order the forms ask for; InputError for a form of other components than the field's.
+  int needs(std::span<const FormNeeds* const> forms) const;
+
   const basis::Geometry& geometry_;
   const quadrature::RuleProvider& rules_;
+  int components_ = 1;
   mutable std::unique_ptr<AssemblyPlan> plan_;
   /// Reference values of twin classes: (lowest element, rule, derivatives) → values. Entries are never removed or
   /// changed once made, so a pointer read under the lock stays valid after it.

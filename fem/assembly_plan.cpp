@@ -84,9 +84,37 @@ void colour(const basis::Space& space, const std::vector<Index>& start, const st
   }
 }
 
+// The scalar pattern s (n × n) as the pattern of d interleaved components: entry (d·i + a, d·j + b) for every
+// entry (i, j) of s and a, b < d. Rows stay sorted within each column.
+void expand_pattern(const Eigen::SparseMatrix<double>& s, int d, Eigen::SparseMatrix<double>& a) {
+  const Index n = s.rows();
+  const Index nnz = static_cast<Index>(s.nonZeros()) * d * d;
+  if (nnz > static_cast<Index>(std::numeric_limits<int>::max())) {
+    throw UnsupportedError("sparsity pattern with " + std::to_string(nnz) + " entries exceeds 32-bit indices");
+  }
+  a.resize(d * n, d * n);
+  a.resizeNonZeros(nnz);
+  int* outer = a.outerIndexPtr();
+  int* inner = a.innerIndexPtr();
+  outer[0] = 0;
+  for (Index j = 0; j < n; ++j) {
+    const int begin = s.outerIndexPtr()[j], end = s.outerIndexPtr()[j + 1];
+    for (int b = 0; b < d; ++b) {
+      const Index column = d * j + b;
+      int* pos = inner + outer[column];
+      for (int k = begin; k < end; ++k) {
+        for (int c = 0; c < d; ++c) *pos++ = static_cast<int>(d * s.innerIndexPtr()[k] + c);
+      }
+      outer[column + 1] = static_cast<int>(pos - inner);
+    }
+  }
+  std::fill(a.valuePtr(), a.valuePtr() + nnz, 0.0);
+}
+
 }  // namespace
 
-AssemblyPlan make_assembly_plan(const basis::Space& space, bool with_pattern) {
+AssemblyPlan make_assembly_plan(const basis::Space& space, bool with_pattern, int components) {
+  if (components < 1) throw InputError("assembly plan: components must be >= 1, got " + std::to_string(components));
   const Index n = space.num_dofs();
   const Index ne = space.num_elements();
   // dof -> elements (CSR).
@@ -105,6 +133,16 @@ AssemblyPlan make_assembly_plan(const basis::Space& space, bool with_pattern) {
   AssemblyPlan plan;
   if (with_pattern) fill_pattern(space, start, elems, plan.pattern);
   colour(space, start, elems, plan);
+  if (components > 1) {
+    if (with_pattern) {
+      Eigen::SparseMatrix<double> scalar;
+      scalar.swap(plan.pattern);
+      expand_pattern(scalar, components, plan.pattern);
+    }
+    std::vector<char> dense(plan.dense.size() * static_cast<std::size_t>(components));
+    for (std::size_t i = 0; i < dense.size(); ++i) dense[i] = plan.dense[i / static_cast<std::size_t>(components)];
+    plan.dense.swap(dense);
+  }
   return plan;
 }
 

@@ -28,6 +28,9 @@ inline constexpr Index kDenseDofElements = 256;
 
 /// with_pattern = false: the colouring and dense dofs only (pattern 0 × 0), for a sink that keeps its own
 /// pattern (a distributed matrix: then no process holds the whole pattern).
-AssemblyPlan make_assembly_plan(const basis::Space& space, bool with_pattern = true);
+/// components = d > 1: the plan of a field with d components over the space (DESIGN.md item 2), dofs interleaved
+/// (global dof d·i + c is component c of function i): the pattern couples every component of i with every
+/// component of j when i and j share an element, dense flags are per field dof, the colouring is the space's.
+AssemblyPlan make_assembly_plan(const basis::Space& space, bool with_pattern = true, int components = 1);
 
 }  // namespace iga::fem

@@ -1,6 +1,7 @@
 #include "fem/dirichlet.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cstdio>
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
@@ -178,6 +179,57 @@ Eigen::VectorXd expand(const ReducedSystem& sys, const Eigen::VectorXd& u_free, 
   for (std::size_t k = 0; k < sys.free.size(); ++k) u(sys.free[k]) = u_free(static_cast<Index>(k));
   for (std::size_t k = 0; k < bc.dofs.size(); ++k) u(bc.dofs[k]) = bc.values(static_cast<Index>(k));
   return u;
+}
+
+DirichletConditions component_conditions(const DirichletConditions& scalar, int c, int d) {
+  DirichletConditions bc;
+  bc.dofs.reserve(scalar.dofs.size());
+  for (Index i : scalar.dofs) bc.dofs.push_back(d * i + c);
+  bc.values = scalar.values;
+  if (scalar.coupling.nonZeros() > 0) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (Index r = 0; r < scalar.coupling.outerSize(); ++r) {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(scalar.coupling, r); it; ++it) {
+        t.emplace_back(r, d * it.col() + c, it.value());
+      }
+    }
+    bc.coupling.resize(scalar.coupling.rows(), d * scalar.coupling.cols());
+    bc.coupling.setFromTriplets(t.begin(), t.end());
+  }
+  return bc;
+}
+
+DirichletConditions merge_conditions(const std::vector<DirichletConditions>& sets, Index num_dofs) {
+  std::vector<std::pair<Index, std::pair<std::size_t, Index>>> all;  // dof → (set, row)
+  bool coupled = false;
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    for (std::size_t k = 0; k < sets[s].dofs.size(); ++k) all.push_back({sets[s].dofs[k], {s, static_cast<Index>(k)}});
+    coupled = coupled || sets[s].coupling.nonZeros() > 0;
+  }
+  std::sort(all.begin(), all.end());
+  DirichletConditions bc;
+  bc.values.resize(static_cast<Index>(all.size()));
+  std::vector<Eigen::Triplet<double>> t;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    if (k > 0 && all[k].first == all[k - 1].first) {
+      throw InputError("Dirichlet conditions: dof " + std::to_string(all[k].first + 1) +
+                       " is prescribed by two conditions (one component given twice where two parts meet: give it one "
+                       "condition over both parts)");
+    }
+    const auto [s, row] = all[k].second;
+    bc.dofs.push_back(all[k].first);
+    bc.values(static_cast<Index>(k)) = sets[s].values(row);
+    if (sets[s].coupling.nonZeros() > 0) {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(sets[s].coupling, row); it; ++it) {
+        t.emplace_back(static_cast<Index>(k), it.col(), it.value());
+      }
+    }
+  }
+  if (coupled) {
+    bc.coupling.resize(static_cast<Index>(all.size()), num_dofs);
+    bc.coupling.setFromTriplets(t.begin(), t.end());
+  }
+  return bc;
 }
 
 }  // namespace iga::fem

@@ -32,6 +32,15 @@ inline constexpr double kMaxDirichletPivotRatio = 1e8;
 DirichletConditions project_dirichlet(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
                                       std::shared_ptr<const Function> g);
 
+/// Conditions on one component: `scalar` (of the space's dofs, as project_dirichlet gives them on a scalar
+/// assembler) as conditions on component c of a field of d interleaved components (dof d·i + c; coupling columns
+/// mapped alike).
+DirichletConditions component_conditions(const DirichletConditions& scalar, int c, int d);
+/// Several sets of conditions (on different components or parts) as one, dofs ascending. InputError when two sets
+/// constrain the same dof (one component prescribed twice where two parts meet: give that component one
+/// condition over both parts).
+DirichletConditions merge_conditions(const std::vector<DirichletConditions>& sets, Index num_dofs);
+
 /// The system for the free dofs: A_ff u_f = b_f - A_fd g_d; with coupled conditions u = u0 + T w and
 /// Tᵀ A T w = Tᵀ (b − A u0), T = identity on the free dofs and −coupling on the constrained ones.
 struct ReducedSystem {

@@ -1,11 +1,39 @@
 #pragma once
-// Error norms of a discrete solution against an exact one.
+// Error norms of a discrete solution against an exact one: a list of norms (DESIGN.md item 1), each with the
+// exact solution's own norm for relative figures.
 #include <Eigen/Core>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "fem/assembler.hpp"
 #include "fem/function.hpp"
 
 namespace iga::fem {
+
+/// kL2: ‖e‖_L2. kH1: |e|_H1, the L2 norm of the (surface) gradient. kH2: |e|_H2 = (∫ e_xx² + 2 e_xy² + e_yy²)^½
+/// (planar domains). kLaplacian: ‖Δe‖_L2 (planar; the biharmonic equation's energy norm).
+enum class Norm { kL2, kH1, kH2, kLaplacian };
+/// "L2", "H1", "H2", "laplacian".
+std::string norm_name(Norm norm);
+
+/// One figure of a report: a norm's name as the problem gives it ("L2", "H1 x", "energy"), the error and the exact
+/// solution's own norm (for relative errors).
+struct NormError {
+  std::string name;
+  double error = 0.0;  ///< of u − u_h
+  double exact = 0.0;  ///< of u
+};
+
+/// Per norm in order, ‖u − u_h‖² and ‖u‖² (2 entries per norm) over the elements e with only[e] != 0 (all when only
+/// is null): a distributed run sums its ranks' parts before norm_errors() takes the roots. Gradients of the exact
+/// solution come from exact.gradients() (projected onto the tangent plane on surfaces), Hessians from
+/// exact.hessians(). UnsupportedError for kH2 or kLaplacian on a surface.
+Eigen::VectorXd norm_squares(const Assembler& assembler, const Eigen::VectorXd& u, const Function& exact,
+                             std::span<const Norm> norms, const std::vector<char>* only = nullptr);
+/// The norms from their squares (2 per name, as norm_squares gives them); NumericalError naming the norm when one
+/// is not finite (an exact solution that overflows, a solve that diverged): never a NaN figure in a report.
+std::vector<NormError> norm_errors(const std::vector<std::string>& names, const Eigen::VectorXd& squares);
 
 struct ErrorNorms {
   double l2 = 0.0;        ///< ||u - u_h||_L2
@@ -14,8 +42,7 @@ struct ErrorNorms {
   double h1_exact = 0.0;  ///< |u|_H1
 };
 
-/// Norms by the assembler's quadrature. The exact gradient is exact.gradients(), projected onto the tangent
-/// plane (for surfaces; for planar domains this drops the z component).
+/// L2 and H1 by the assembler's quadrature (norm_squares with kL2, kH1).
 ErrorNorms compute_errors(const Assembler& assembler, const Eigen::VectorXd& u, const Function& exact);
 
 /// The squares behind compute_errors (‖u − u_h‖², |u − u_h|²_1, ‖u‖², |u|²_1) over the elements e with

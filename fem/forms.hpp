@@ -47,30 +47,42 @@ struct BoundaryContext {
   basis::GeometryValues geo;
   Eigen::VectorXd weight;     ///< rule weight × |dx/dt| (arc length)
   Eigen::Matrix3Xd conormal;  ///< outward unit conormal: unit tangent × unit normal
+  int dim = 2;          ///< as ElementContext::dim
+  int derivatives = 1;  ///< what was prepared: 1, or 2 (then also grad, laplacian and, planar, hessian)
+  /// derivatives 2: the same blocks as ElementContext's, at the side's points.
+  Eigen::MatrixXd grad, laplacian, hessian;
 };
 
-class BilinearForm {
+/// What a form needs from the element loop (deal.II's update flags): derivatives() 1 for values and gradients, 2 for
+/// the Laplacians and (planar) Hessians through the map as well, the loop preparing the largest its forms ask for;
+/// components() the number of components of the field it is written for (the local matrix is then
+/// (components · nloc)², interleaved: local index components · a + c for function a and component c). The loop
+/// refuses a form whose components differ from its own.
+class FormNeeds {
  public:
-  virtual ~BilinearForm() = default;
+  virtual ~FormNeeds() = default;
+  virtual int derivatives() const { return 1; }
+  virtual int components() const { return 1; }
+};
+
+class BilinearForm : public FormNeeds {
+ public:
   /// local (nloc × nloc, zeroed by the caller) += the form's element matrix.
   virtual void add(const ElementContext& ctx, Eigen::MatrixXd& local) const = 0;
 };
 
-class LinearForm {
+class LinearForm : public FormNeeds {
  public:
-  virtual ~LinearForm() = default;
   virtual void add(const ElementContext& ctx, Eigen::VectorXd& local) const = 0;
 };
 
-class BoundaryBilinearForm {
+class BoundaryBilinearForm : public FormNeeds {
  public:
-  virtual ~BoundaryBilinearForm() = default;
   virtual void add(const BoundaryContext& ctx, Eigen::MatrixXd& local) const = 0;
 };
 
-class BoundaryLinearForm {
+class BoundaryLinearForm : public FormNeeds {
  public:
-  virtual ~BoundaryLinearForm() = default;
   virtual void add(const BoundaryContext& ctx, Eigen::VectorXd& local) const = 0;
 };
 

@@ -72,10 +72,38 @@ void Function::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const
   }
 }
 
+void Function::hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const {
+  // Column j of the Hessian: (−g(x + 2h e_j) + 8 g(x + h e_j) − 8 g(x − h e_j) + g(x − 2h e_j)) / 12h.
+  const Eigen::Index q = x.cols();
+  const double h = fd_step_;
+  Eigen::Matrix3Xd shifted(3, 12 * q), g;
+  const double offsets[4] = {2 * h, h, -h, -2 * h};
+  for (Eigen::Index k = 0; k < q; ++k) {
+    for (int j = 0; j < 3; ++j) {
+      for (int o = 0; o < 4; ++o) {
+        shifted.col(12 * k + 4 * j + o) = x.col(k);
+        shifted(j, 12 * k + 4 * j + o) += offsets[o];
+      }
+    }
+  }
+  gradients(shifted, g);
+  out.resize(6, q);
+  for (Eigen::Index k = 0; k < q; ++k) {
+    Eigen::Matrix3d m;
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Index c = 12 * k + 4 * j;
+      m.col(j) = (-g.col(c) + 8 * g.col(c + 1) - 8 * g.col(c + 2) + g.col(c + 3)) / (12 * h);
+    }
+    m = 0.5 * (m + m.transpose()).eval();
+    out.col(k) << m(0, 0), m(0, 1), m(1, 1), m(0, 2), m(1, 2), m(2, 2);
+  }
+}
+
 namespace {
 class PointwiseFunction final : public Function {
  public:
-  PointwiseFunction(PointFunction f, PointGradient g) : f_(std::move(f)), g_(std::move(g)) {}
+  PointwiseFunction(PointFunction f, PointGradient g, PointHessian h)
+      : f_(std::move(f)), g_(std::move(g)), h_(std::move(h)) {}
   void values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const override {
     out.resize(x.cols());
     for (Eigen::Index k = 0; k < x.cols(); ++k) out(k) = f_(x.col(k));
@@ -89,10 +117,38 @@ class PointwiseFunction final : public Function {
     for (Eigen::Index k = 0; k < x.cols(); ++k) out.col(k) = g_(x.col(k));
   }
   bool exact_gradient() const override { return static_cast<bool>(g_); }
+  void hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const override {
+    if (!h_) {
+      Function::hessians(x, out);
+      return;
+    }
+    out.resize(6, x.cols());
+    for (Eigen::Index k = 0; k < x.cols(); ++k) {
+      const Eigen::Matrix3d m = h_(x.col(k));
+      out.col(k) << m(0, 0), m(0, 1), m(1, 1), m(0, 2), m(1, 2), m(2, 2);
+    }
+  }
+  bool exact_hessian() const override { return static_cast<bool>(h_); }
 
  private:
   PointFunction f_;
   PointGradient g_;
+  PointHessian h_;
+};
+
+class Laplacian final : public Function {
+ public:
+  Laplacian(std::shared_ptr<const Function> u, bool planar) : u_(std::move(u)), planar_(planar) {}
+  void values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const override {
+    Eigen::Matrix<double, 6, Eigen::Dynamic> h;
+    u_->hessians(x, h);
+    out = (h.row(0) + h.row(2)).transpose();
+    if (!planar_) out += h.row(5).transpose();
+  }
+
+ private:
+  std::shared_ptr<const Function> u_;
+  bool planar_;
 };
 
 class NormalFlux final : public BoundaryFunction {
@@ -115,13 +171,18 @@ double finite_difference_step(const basis::Geometry& geometry) {
   return extent > 0.0 && std::isfinite(extent) ? 1e-3 * extent : 1e-3;
 }
 
-std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad) {
-  return std::make_shared<PointwiseFunction>(std::move(f), std::move(grad));
+std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad, PointHessian hessian) {
+  return std::make_shared<PointwiseFunction>(std::move(f), std::move(grad), std::move(hessian));
+}
+
+std::shared_ptr<Function> laplacian_of(std::shared_ptr<const Function> u, bool planar) {
+  return std::make_shared<Laplacian>(std::move(u), planar);
 }
 
 std::shared_ptr<Function> constant_function(double c) {
   return make_function([c](const Eigen::Vector3d&) { return c; },
-                       [](const Eigen::Vector3d&) -> Eigen::Vector3d { return Eigen::Vector3d::Zero(); });
+                       [](const Eigen::Vector3d&) -> Eigen::Vector3d { return Eigen::Vector3d::Zero(); },
+                       [](const Eigen::Vector3d&) -> Eigen::Matrix3d { return Eigen::Matrix3d::Zero(); });
 }
 
 std::shared_ptr<Function> shifted_function(std::shared_ptr<const Function> u, double c) {
@@ -134,6 +195,10 @@ std::shared_ptr<Function> shifted_function(std::shared_ptr<const Function> u, do
     }
     void gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const override { u_->gradients(x, out); }
     bool exact_gradient() const override { return u_->exact_gradient(); }
+    void hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const override {
+      u_->hessians(x, out);
+    }
+    bool exact_hessian() const override { return u_->exact_hessian(); }
 
    private:
     std::shared_ptr<const Function> u_;

@@ -23,6 +23,12 @@ class Function {
   void partial_gradients(const Eigen::Matrix3Xd& x, int components, Eigen::Matrix3Xd& out) const;
   /// True when gradients() is exact (closed form), false when it is a finite difference.
   virtual bool exact_gradient() const { return false; }
+  /// out.col(k) = the Hessian of u at x.col(k), 6 × q, rows xx, xy, yy, xz, yz, zz (the first three are a planar
+  /// domain's, in the order of ElementContext::hessian's blocks). The default is a fourth-order central difference
+  /// of gradients() with step fd_step(), symmetrised; override when the Hessian is known in closed form.
+  virtual void hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const;
+  /// True when hessians() is exact (closed form).
+  virtual bool exact_hessian() const { return false; }
   /// Step of the default finite-difference gradient (physical units); 1e-3 suits domains of size ~1, and
   /// finite_difference_step(geometry) gives the step for any other (the same relative to the domain's size).
   double fd_step() const { return fd_step_; }
@@ -34,13 +40,17 @@ class Function {
 
 using PointFunction = std::function<double(const Eigen::Vector3d&)>;
 using PointGradient = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+using PointHessian = std::function<Eigen::Matrix3d(const Eigen::Vector3d&)>;
 
 /// A Function from a point-wise callable, with an optional closed-form gradient.
 /// 1e-3 × the largest extent of the geometry's control points: the finite-difference step that is to a domain of
 /// any size (units of 1e-100 or 1e100) what 1e-3 is to the unit square.
 double finite_difference_step(const basis::Geometry& geometry);
 
-std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad = {});
+std::shared_ptr<Function> make_function(PointFunction f, PointGradient grad = {}, PointHessian hessian = {});
+/// The Laplacian of u, Δu = u_xx + u_yy (+ u_zz), from u's hessians(), as a function (for boundary data such as a
+/// simply supported plate's Δu = g). `planar`: without u_zz.
+std::shared_ptr<Function> laplacian_of(std::shared_ptr<const Function> u, bool planar = true);
 /// The constant c (gradient 0).
 std::shared_ptr<Function> constant_function(double c);
 

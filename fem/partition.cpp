@@ -68,4 +68,23 @@ Partition partition_elements(const basis::Space& space, int parts) {
   return p;
 }
 
+Partition with_components(const Partition& scalar, int d) {
+  if (d == 1) return scalar;
+  Partition p;
+  p.parts = scalar.parts;
+  p.element_owner = scalar.element_owner;
+  const std::size_t n = scalar.number.size(), du = static_cast<std::size_t>(d);
+  p.dof_owner.resize(n * du);
+  p.number.resize(n * du);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t c = 0; c < du; ++c) {
+      p.dof_owner[du * i + c] = scalar.dof_owner[i];
+      p.number[du * i + c] = d * scalar.number[i] + static_cast<Index>(c);
+    }
+  }
+  p.offsets = scalar.offsets;
+  for (Index& o : p.offsets) o *= d;
+  return p;
+}
+
 }  // namespace iga::fem

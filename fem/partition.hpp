@@ -25,4 +25,8 @@ struct Partition {
 /// are fewer elements than parts; NumericalError when METIS fails.
 Partition partition_elements(const basis::Space& space, int parts);
 
+/// The partition of a field with d interleaved components over the space (Assembler::field_dofs): element owners
+/// as they are, field dof d·i + c owned with dof i and numbered d·number[i] + c, offsets scaled by d.
+Partition with_components(const Partition& scalar, int d);
+
 }  // namespace iga::fem

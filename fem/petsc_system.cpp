@@ -194,12 +194,16 @@ PetscSystem::PetscSystem(const Assembler& assembler, const SolverOptions& option
   const basis::Space& space = assembler.geometry().space();
   assembler.plan(false);  // the colouring of the element loop; the pattern is the distributed matrix's own
   rank_ = rank();
-  part_ = partition_elements(space, ranks());
+  const int d = assembler.components();
+  const Partition scalar = partition_elements(space, ranks());
+  part_ = with_components(scalar, d);
   own_.resize(part_.element_owner.size());
   for (std::size_t e = 0; e < own_.size(); ++e) own_[e] = part_.element_owner[e] == rank_;
   lo_ = part_.offsets[static_cast<std::size_t>(rank_)];
   hi_ = part_.offsets[static_cast<std::size_t>(rank_) + 1];
+  // Preallocation from the scalar space's pattern, then per component: a field row couples d columns per scalar one.
   const Index n = space.num_dofs(), local = hi_ - lo_;
+  const Index slo = scalar.offsets[static_cast<std::size_t>(rank_)], shi = scalar.offsets[static_cast<std::size_t>(rank_) + 1];
   // Preallocation from the owned rows' pattern: row i's columns are the dofs of the elements that touch dof i.
   std::vector<Index> start(static_cast<std::size_t>(n) + 1, 0), elems;
   for (Index e = 0; e < space.num_elements(); ++e) {
@@ -213,19 +217,25 @@ PetscSystem::PetscSystem(const Assembler& assembler, const SolverOptions& option
   }
   std::vector<PetscInt> d_nnz(static_cast<std::size_t>(local), 0), o_nnz(static_cast<std::size_t>(local), 0);
   std::vector<Index> seen(static_cast<std::size_t>(n), -1);
-  for (Index d = 0; d < n; ++d) {
-    const Index row = part_.number[static_cast<std::size_t>(d)];
-    if (row < lo_ || row >= hi_) continue;
-    for (Index k = start[static_cast<std::size_t>(d)]; k < start[static_cast<std::size_t>(d) + 1]; ++k) {
+  for (Index i = 0; i < n; ++i) {
+    const Index row = scalar.number[static_cast<std::size_t>(i)];
+    if (row < slo || row >= shi) continue;
+    PetscInt on = 0, off = 0;
+    for (Index k = start[static_cast<std::size_t>(i)]; k < start[static_cast<std::size_t>(i) + 1]; ++k) {
       for (Index c : space.dofs(elems[static_cast<std::size_t>(k)])) {
-        if (seen[static_cast<std::size_t>(c)] == d) continue;
-        seen[static_cast<std::size_t>(c)] = d;
-        const Index col = part_.number[static_cast<std::size_t>(c)];
-        ++(col >= lo_ && col < hi_ ? d_nnz : o_nnz)[static_cast<std::size_t>(row - lo_)];
+        if (seen[static_cast<std::size_t>(c)] == i) continue;
+        seen[static_cast<std::size_t>(c)] = i;
+        const Index col = scalar.number[static_cast<std::size_t>(c)];
+        ++(col >= slo && col < shi ? on : off);
       }
     }
+    for (int c = 0; c < d; ++c) {
+      const std::size_t r = static_cast<std::size_t>(d * row + c - lo_);
+      d_nnz[r] = d * on;
+      o_nnz[r] = d * off;
+    }
   }
-  const PetscInt pl = static_cast<PetscInt>(local), pn = static_cast<PetscInt>(n);
+  const PetscInt pl = static_cast<PetscInt>(local), pn = static_cast<PetscInt>(d * n);
   check(MatCreateAIJ(comm_, pl, pl, pn, pn, 0, d_nnz.data(), 0, o_nnz.data(), a_.out()), "MatCreateAIJ");
   // Element matrices are column-major (Eigen).
   check(MatSetOption(a_, MAT_ROW_ORIENTED, PETSC_FALSE), "MatSetOption");

@@ -1,0 +1,120 @@
+#include "fem/problem.hpp"
+
+#include <chrono>
+#include <optional>
+
+#include "core/error.hpp"
+#include "fem/linear_system.hpp"
+
+namespace iga::fem {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+const NormError& ProblemResult::error(const std::string& name) const {
+  for (const NormError& e : errors) {
+    if (e.name == name) return e;
+  }
+  throw InputError("the " + name + " error was not computed (no exact solution, or not one of the problem's norms)");
+}
+
+struct ProblemSolver::Systems {
+  std::unique_ptr<Assembler> assembler;
+  std::unique_ptr<LinearSystem> system;
+  DirichletConditions bc;
+  std::chrono::steady_clock::time_point t0;
+};
+
+ProblemSolver::ProblemSolver(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+                             std::shared_ptr<const Problem> problem, const SolverOptions& solver)
+    : geometry_(geometry), rules_(rules), problem_(std::move(problem)), solver_(solver),
+      sys_(std::make_unique<Systems>()) {
+  if (!problem_) throw InputError("ProblemSolver: no problem given");
+}
+
+ProblemSolver::~ProblemSolver() = default;
+
+const Assembler& ProblemSolver::assembler() const {
+  if (!sys_->assembler) throw InputError("ProblemSolver: setup() has not run");
+  return *sys_->assembler;
+}
+
+void ProblemSolver::setup() {
+  if (done_ >= 1) return;
+  problem_->check(geometry_);
+  const basis::Space& space = geometry_.space();
+  r_.problem = problem_->name();
+  r_.dofs = space.num_dofs();
+  r_.elements = space.num_elements();
+  sys_->t0 = std::chrono::steady_clock::now();
+  sys_->assembler = std::make_unique<Assembler>(geometry_, rules_, problem_->components());
+  sys_->system = make_linear_system(*sys_->assembler, solver_);
+  r_.pattern_seconds = seconds_since(sys_->t0);
+  done_ = 1;
+}
+
+void ProblemSolver::assemble() {
+  if (done_ >= 2) return;
+  setup();
+  const Assembler& assembler = *sys_->assembler;
+  LinearSystem& system = *sys_->system;
+  const std::vector<const BilinearForm*> bilinear = problem_->bilinear_forms();
+  const std::vector<const LinearForm*> linear = problem_->linear_forms();
+  AssemblyStats stats;
+  system.run_everywhere([&] { stats = assembler.assemble(bilinear, linear, system.sink()); });
+  const AssemblyStats total = system.total(stats);
+  r_.domain_measure = total.measure;
+  r_.quadrature_points = total.quadrature_points;
+  problem_->add_boundary_terms(assembler, system, r_.choices);
+  sys_->bc = problem_->constraints(assembler, r_.choices);
+  r_.constrained_dofs = static_cast<Index>(sys_->bc.dofs.size());
+  r_.assembly_seconds = seconds_since(sys_->t0);
+  done_ = 2;
+}
+
+void ProblemSolver::solve() {
+  if (done_ >= 3) return;
+  assemble();
+  SolveResult s = sys_->system->solve(sys_->bc);
+  r_.solve_seconds = s.seconds;
+  r_.solver = s.solver;
+  r_.solver_ordering = s.ordering;
+  r_.residual_norm = s.residual_norm;
+  r_.solver_iterations = s.iterations;
+  r_.free_dofs = s.free_dofs;
+  r_.ranks = s.ranks;
+  r_.u = std::move(s.x);
+  done_ = 3;
+}
+
+void ProblemSolver::errors() {
+  if (done_ >= 4) return;
+  solve();
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<std::string> names = problem_->error_names();
+  if (!names.empty()) {
+    const std::unique_ptr<quadrature::RuleProvider> finer = rules_.error_rules();
+    std::optional<Assembler> error_assembler;
+    error_assembler.emplace(geometry_, finer ? *finer : rules_);
+    const Assembler& by = *error_assembler;
+    r_.error_quadrature = finer ? finer->name() : rules_.name();
+    const LinearSystem& system = *sys_->system;
+    Eigen::VectorXd squares;
+    system.run_everywhere([&] { squares = problem_->error_squares(by, r_.u, system.own_elements()); });
+    r_.errors = norm_errors(names, system.sum(squares));
+  }
+  r_.error_seconds = seconds_since(t0);
+  done_ = 4;
+}
+
+ProblemResult solve_problem(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+                            std::shared_ptr<const Problem> problem, const SolverOptions& solver) {
+  ProblemSolver s(geometry, rules, std::move(problem), solver);
+  s.errors();
+  return s.result();
+}
+
+}  // namespace iga::fem

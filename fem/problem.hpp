@@ -1,0 +1,104 @@
+#pragma once
+// One problem pipeline (DESIGN.md item 1): setup → assemble → solve → errors for any PDE that says what it
+// assembles. A PDE implements fem::Problem in its own folder (pde/<name>/); the pipeline owns the assembler, the
+// linear system (CHOLMOD, CG, or PETSc under MPI: fem/linear_system.hpp) and the report, and never names a PDE.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "basis/geometry.hpp"
+#include "fem/assembler.hpp"
+#include "fem/dirichlet.hpp"
+#include "fem/errors.hpp"
+#include "fem/forms.hpp"
+#include "fem/function.hpp"
+#include "fem/solver.hpp"
+#include "quadrature/rule_provider.hpp"
+
+namespace iga::fem {
+
+class LinearSystem;
+
+/// Settings a problem chose and reports, in order: ("clamped parts", "v0, u1: u strong, ∂u/∂n by Nitsche").
+using Choices = std::vector<std::pair<std::string, std::string>>;
+
+/// What a PDE gives the pipeline. The forms it returns live as long as the problem.
+class Problem {
+ public:
+  virtual ~Problem() = default;
+  /// As in reports and messages: "biharmonic".
+  virtual std::string name() const = 0;
+  /// The number of components of the unknown field (DESIGN.md item 2): 1 scalar, 2 a planar displacement, ...
+  virtual int components() const { return 1; }
+  /// Checks the set-up against the geometry before anything is built: InputError (or UnsupportedError) naming what
+  /// is wrong, in the user's terms (a boundary part, an element).
+  virtual void check(const basis::Geometry& geometry) const = 0;
+  virtual std::vector<const BilinearForm*> bilinear_forms() const = 0;
+  virtual std::vector<const LinearForm*> linear_forms() const = 0;
+  /// Boundary terms every process computes alike (natural loads, Nitsche's terms), through system.add(); what was
+  /// chosen goes into choices.
+  virtual void add_boundary_terms(const Assembler& assembler, LinearSystem& system, Choices& choices) const = 0;
+  /// The essential conditions, applied after assembly as the reduced system.
+  virtual DirichletConditions constraints(const Assembler& assembler, Choices& choices) const = 0;
+  /// The error figures, in report order; none without an exact solution.
+  virtual std::vector<std::string> error_names() const = 0;
+  /// Their squares over the elements e with only[e] != 0 (all when null), error² and exact² per name (norm_squares'
+  /// layout), by the assembler `by` (the error rules; a scalar assembler on the same geometry). The pipeline sums
+  /// them over the ranks before the roots.
+  virtual Eigen::VectorXd error_squares(const Assembler& by, const Eigen::VectorXd& u,
+                                        const std::vector<char>* only) const = 0;
+};
+
+struct ProblemResult {
+  std::string problem;              ///< Problem::name()
+  Eigen::VectorXd u;                ///< coefficients of the solution in the geometry's space
+  Index dofs = 0, free_dofs = 0, constrained_dofs = 0, elements = 0, quadrature_points = 0;
+  double domain_measure = 0.0;
+  double pattern_seconds = 0.0, assembly_seconds = 0.0, solve_seconds = 0.0, error_seconds = 0.0;
+  std::string solver, solver_ordering, error_quadrature;
+  double residual_norm = 0.0;
+  Index solver_iterations = 0;
+  int ranks = 1;
+  std::vector<NormError> errors;    ///< with an exact solution, in the order of Problem::error_names()
+  Choices choices;
+  /// The figure of that name; InputError when it was not computed.
+  const NormError& error(const std::string& name) const;
+};
+
+/// The pipeline in steps, each once and in order (a step called out of order runs the missing ones first). Keeps
+/// references to geometry and rules (they must outlive it) and shares the problem.
+class ProblemSolver {
+ public:
+  ProblemSolver(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+                std::shared_ptr<const Problem> problem, const SolverOptions& solver = {});
+  ~ProblemSolver();
+  ProblemSolver(const ProblemSolver&) = delete;
+  ProblemSolver& operator=(const ProblemSolver&) = delete;
+
+  void setup();     ///< Problem::check, the assembler, the system's pattern
+  void assemble();  ///< element loop, boundary terms, constraints
+  void solve();     ///< the reduced system's solution, expanded to all dofs
+  void errors();    ///< the problem's norms against its exact solution (nothing without one)
+
+  const ProblemResult& result() const { return r_; }
+  const Assembler& assembler() const;
+  const Problem& problem() const { return *problem_; }
+
+ private:
+  struct Systems;
+  const basis::Geometry& geometry_;
+  const quadrature::RuleProvider& rules_;
+  std::shared_ptr<const Problem> problem_;
+  SolverOptions solver_;
+  ProblemResult r_;
+  int done_ = 0;
+  std::unique_ptr<Systems> sys_;
+};
+
+/// setup, assemble, solve and errors in one call.
+ProblemResult solve_problem(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
+                            std::shared_ptr<const Problem> problem, const SolverOptions& solver = {});
+
+}  // namespace iga::fem
