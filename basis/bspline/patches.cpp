@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "basis/bspline/rational_space.hpp"
 #include "core/error.hpp"
@@ -58,6 +59,57 @@ Geometry make_quarter_annulus(int degree, double r_inner, double r_outer) {
     }
   }
   return make_rational_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp, weights);
+}
+
+Geometry make_plate_with_hole(int degree, double radius, double side) {
+  if (degree < 2) {
+    throw InputError("plate with a hole: the hole is quadratic, degree " + std::to_string(degree) +
+                     " cannot represent it; use degree >= 2");
+  }
+  if (!(radius > 0.0 && side > radius) || !std::isfinite(side)) {
+    throw InputError("plate with a hole: need 0 < radius < side");
+  }
+  const int p = degree;
+  const double w = std::cos(std::numbers::pi / 8), t = std::tan(std::numbers::pi / 8), c = std::sqrt(0.5);
+  // Per half h (0: θ in [0°, 45°], 1: [45°, 90°]) the hole's and the outer side's rational quadratic Bézier
+  // control points in homogeneous coordinates (w x, w y, w).
+  auto half = [&](int h, double r, bool outer) {
+    Eigen::MatrixXd b(3, 3);
+    Eigen::Vector2d p0, p1, p2;
+    if (h == 0) {
+      p0 = {r, 0.0};
+      p1 = {r, r * t};
+      p2 = outer ? Eigen::Vector2d(r, r) : Eigen::Vector2d(r * c, r * c);
+    } else {
+      p0 = outer ? Eigen::Vector2d(r, r) : Eigen::Vector2d(r * c, r * c);
+      p1 = {r * t, r};
+      p2 = {0.0, r};
+    }
+    b << p0(0), p0(1), 1.0, w * p1(0), w * p1(1), w, p2(0), p2(1), 1.0;
+    return elevate_to(b, p);  // (p+1) × 3
+  };
+  Eigen::MatrixXd linear(2, 1);
+  linear << 0.0, 1.0;
+  const Eigen::MatrixXd s = elevate_to(linear, p);  // the radial blend at the p+1 Bézier points
+  const int nu = p + 1, nv = 2 * p + 1;
+  Eigen::MatrixXd cp(nu * nv, 2);
+  Eigen::VectorXd weights(nu * nv);
+  for (int h = 0; h < 2; ++h) {
+    const Eigen::MatrixXd hole = half(h, radius, false), out = half(h, side, true);
+    for (int j = 0; j <= p; ++j) {
+      const int row = h * p + j;  // the shared point of the two halves is written twice, alike
+      for (int i = 0; i < nu; ++i) {
+        const Eigen::RowVector2d x = (1 - s(i, 0)) * hole.block(j, 0, 1, 2) / hole(j, 2) +
+                                     s(i, 0) * out.block(j, 0, 1, 2) / out(j, 2);
+        cp.row(i + nu * row) = x;
+        weights(i + nu * row) = hole(j, 2);
+      }
+    }
+  }
+  std::vector<double> v(static_cast<std::size_t>(p + 1), 0.0);
+  v.insert(v.end(), static_cast<std::size_t>(p), 0.5);
+  v.insert(v.end(), static_cast<std::size_t>(p + 1), 1.0);
+  return make_rational_patch(KnotVector::uniform(p, 1), KnotVector(p, v), cp, weights);
 }
 
 Geometry make_rectangle(int degree, double x0, double x1, double y0, double y1) {

@@ -18,6 +18,15 @@ Geometry make_patch(KnotVector u, KnotVector v, Eigen::MatrixXd control_points);
 /// circles (|x| = r exactly) but not parametrised by arc length. InputError for p < 2.
 Geometry make_quarter_annulus(int degree, double r_inner = 1.0, double r_outer = 2.0);
 
+/// The quarter of a square plate [0, L]² with a circular hole of radius R about the origin, exactly, as one NURBS
+/// patch of degree (p, p), p >= 2 (the classic domain of Kirsch's problem in IgA; Hughes, Cottrell and Bazilevs
+/// 2005 build it from the same two arcs): u runs radially on straight segments from the hole (u0) to the outer
+/// sides (u1), v along the hole from θ = 0 (v0, the segment y = 0) to θ = 90° (v1, the segment x = 0). v has a knot
+/// of multiplicity p at 1/2, the diagonal x = y: each half is the rational quadratic 45° arc (weights 1, cos 22.5°,
+/// 1) raised to degree p, and the outer sides x = L and y = L carry the same weights, so the patch is C0 in the
+/// space there and the hole exactly circular. InputError for p < 2 or not 0 < R < L.
+Geometry make_plate_with_hole(int degree, double radius = 1.0, double side = 4.0);
+
 /// The rectangle [x0,x1]×[y0,y1] (affine map) as a single Bézier patch of degree (p, p), p >= 1.
 Geometry make_rectangle(int degree, double x0 = 0.0, double x1 = 1.0, double y0 = 0.0, double y1 = 1.0);
 

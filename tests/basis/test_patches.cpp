@@ -66,6 +66,26 @@ TEST(Patches, QuarterAnnulusAreaIsExact) {
   EXPECT_THROW(make_quarter_annulus(1), InputError);
 }
 
+// The quarter plate [0, 4]² with the hole r <= 1: area 16 − π/4; the hole (u = 0) on the circle, the outer sides
+// (u = 1) on x = 4 and y = 4, and the symmetry segments on the axes, at every degree.
+TEST(Patches, PlateWithAHoleIsExact) {
+  const double exact = 16.0 - 0.25 * std::numbers::pi;
+  for (int p = 2; p <= 4; ++p) {
+    const basis::Geometry g = make_plate_with_hole(p);
+    EXPECT_NEAR(area(refine::refine_uniform(g, 2).geometry, 12), exact, 1e-12) << p;
+    for (double t = 0.0; t <= 1.0; t += 1.0 / 16) {
+      EXPECT_NEAR(map_point(g, 0.0, t).head<2>().norm(), 1.0, 1e-14) << p << " " << t;
+      const Eigen::Vector3d outer = map_point(g, 1.0, t);
+      EXPECT_NEAR(t <= 0.5 ? outer(0) : outer(1), 4.0, 1e-14) << p << " " << t;
+      EXPECT_NEAR(map_point(g, t, 0.0)(1), 0.0, 1e-14);
+      EXPECT_NEAR(map_point(g, t, 1.0)(0), 0.0, 1e-14);
+    }
+    EXPECT_NEAR((map_point(g, 1.0, 0.5) - Eigen::Vector3d(4, 4, 0)).norm(), 0.0, 1e-14);
+  }
+  EXPECT_THROW(make_plate_with_hole(1), InputError);
+  EXPECT_THROW(make_plate_with_hole(2, 2.0, 1.0), InputError);
+}
+
 TEST(Patches, RectangleAreaAndAffineMap) {
   const basis::Geometry g = make_rectangle(3, 1.0, 4.0, -1.0, 1.0);
   EXPECT_NEAR(area(g, 2), 6.0, 1e-14);
