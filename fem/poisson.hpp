@@ -79,7 +79,8 @@ BoundarySplit split_boundary(const basis::Geometry& geometry, const PoissonProbl
 void select_neumann(PoissonProblem& problem, const std::string& neumann, const std::string& boundary,
                     const std::string& where, const std::vector<std::string>& names);
 
-/// The pipeline in steps (deal.II step-6's setup_system / assemble_system / solve, DESIGN item 5), for loops
+/// The pipeline in steps (deal.II step-6's setup_system / assemble_system / solve, DESIGN item 5): the one problem
+/// pipeline (fem::ProblemSolver, fem/problem.hpp) run on Poisson's fem::Problem, with Poisson's figures; for loops
 /// that need the pieces: setup() → assemble() → solve() → errors(), each once and in this order (a step
 /// called out of order runs the missing ones first). The solver keeps references to geometry and rules (they must
 /// outlive it) and a copy of the problem.

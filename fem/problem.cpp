@@ -78,7 +78,14 @@ void ProblemSolver::assemble() {
 void ProblemSolver::solve() {
   if (done_ >= 3) return;
   assemble();
-  SolveResult s = sys_->system->solve(sys_->bc);
+  SolveResult s;
+  try {
+    s = sys_->system->solve(sys_->bc);
+  } catch (const NumericalError& e) {
+    const std::string explained = problem_->explain_solve_failure(e.what());
+    if (explained == e.what()) throw;
+    throw NumericalError(explained);
+  }
   r_.solve_seconds = s.seconds;
   r_.solver = s.solver;
   r_.solver_ordering = s.ordering;
@@ -86,7 +93,11 @@ void ProblemSolver::solve() {
   r_.solver_iterations = s.iterations;
   r_.free_dofs = s.free_dofs;
   r_.ranks = s.ranks;
+  r_.elements_per_rank = std::move(s.elements_per_rank);
+  r_.dofs_per_rank = std::move(s.dofs_per_rank);
+  r_.element_owner = std::move(s.element_owner);
   r_.u = std::move(s.x);
+  problem_->finish(*sys_->assembler, r_.u);
   done_ = 3;
 }
 
@@ -101,13 +112,17 @@ void ProblemSolver::errors() {
     error_assembler.emplace(geometry_, finer ? *finer : rules_);
     const Assembler& by = *error_assembler;
     r_.error_quadrature = finer ? finer->name() : rules_.name();
-    const LinearSystem& system = *sys_->system;
-    Eigen::VectorXd squares;
-    system.run_everywhere([&] { squares = problem_->error_squares(by, r_.u, system.own_elements()); });
-    r_.errors = norm_errors(names, system.sum(squares));
+    r_.errors = norm_errors(names, problem_->error_squares(by, r_.u, *sys_->system));
   }
   r_.error_seconds = seconds_since(t0);
   done_ = 4;
+}
+
+Eigen::VectorXd summed_squares(const LinearSystem& system,
+                               const std::function<Eigen::VectorXd(const std::vector<char>* only)>& f) {
+  Eigen::VectorXd own;
+  system.run_everywhere([&] { own = f(system.own_elements()); });
+  return system.sum(own);
 }
 
 ProblemResult solve_problem(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,

@@ -3,6 +3,7 @@
 // assembles. A PDE implements fem::Problem in its own folder (pde/<name>/); the pipeline owns the assembler, the
 // linear system (CHOLMOD, CG, or PETSc under MPI: fem/linear_system.hpp) and the report, and never names a PDE.
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -42,14 +43,25 @@ class Problem {
   virtual void add_boundary_terms(const Assembler& assembler, LinearSystem& system, Choices& choices) const = 0;
   /// The essential conditions, applied after assembly as the reduced system.
   virtual DirichletConditions constraints(const Assembler& assembler, Choices& choices) const = 0;
+  /// A failed solve's message, with what this problem knows of its cause (a Nitsche penalty too small): by default
+  /// as it is.
+  virtual std::string explain_solve_failure(const std::string& message) const { return message; }
+  /// The solution after the solve, on every process (a constant removed for a mean-zero solution): by default as it
+  /// is.
+  virtual void finish(const Assembler& /*assembler*/, Eigen::VectorXd& /*u*/) const {}
   /// The error figures, in report order; none without an exact solution.
   virtual std::vector<std::string> error_names() const = 0;
-  /// Their squares over the elements e with only[e] != 0 (all when null), error² and exact² per name (norm_squares'
-  /// layout), by the assembler `by` (the error rules; a scalar assembler on the same geometry). The pipeline sums
-  /// them over the ranks before the roots.
+  /// Their squares over the whole domain, error² and exact² per name (norm_squares' layout), by the assembler `by`
+  /// (the error rules; scalar, on the same geometry): each process integrates system.own_elements() and the parts
+  /// are summed over the processes (summed_squares() does both).
   virtual Eigen::VectorXd error_squares(const Assembler& by, const Eigen::VectorXd& u,
-                                        const std::vector<char>* only) const = 0;
+                                        const LinearSystem& system) const = 0;
 };
+
+/// f(only) on each process for its own elements (LinearSystem::run_everywhere: a failure anywhere fails all),
+/// summed over the processes.
+Eigen::VectorXd summed_squares(const LinearSystem& system,
+                               const std::function<Eigen::VectorXd(const std::vector<char>* only)>& f);
 
 struct ProblemResult {
   std::string problem;              ///< Problem::name()
@@ -61,6 +73,8 @@ struct ProblemResult {
   double residual_norm = 0.0;
   Index solver_iterations = 0;
   int ranks = 1;
+  std::vector<Index> elements_per_rank, dofs_per_rank;  ///< owned elements and dofs of each rank (PETSc)
+  std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc; for the output's pieces)
   std::vector<NormError> errors;    ///< with an exact solution, in the order of Problem::error_names()
   Choices choices;
   /// The figure of that name; InputError when it was not computed.

@@ -144,9 +144,11 @@ class Biharmonic final : public fem::Problem {
     return {"L2", "H1", "H2", "energy"};
   }
   Eigen::VectorXd error_squares(const fem::Assembler& by, const Eigen::VectorXd& u,
-                                const std::vector<char>* only) const override {
+                                const fem::LinearSystem& system) const override {
     const fem::Norm norms[4] = {fem::Norm::kL2, fem::Norm::kH1, fem::Norm::kH2, fem::Norm::kLaplacian};
-    return fem::norm_squares(by, u, *d_.exact, norms, only);
+    return fem::summed_squares(system, [&](const std::vector<char>* only) {
+      return fem::norm_squares(by, u, *d_.exact, norms, only);
+    });
   }
 
  private:

@@ -124,7 +124,9 @@ class Elasticity final : public fem::Problem {
     return {"L2", "L2 x", "L2 y", "H1", "H1 x", "H1 y", "energy"};
   }
   Eigen::VectorXd error_squares(const fem::Assembler& by, const Eigen::VectorXd& u,
-                                const std::vector<char>* only) const override;
+                                const fem::LinearSystem& system) const override {
+    return fem::summed_squares(system, [&](const std::vector<char>* only) { return squares(by, u, only); });
+  }
 
  private:
   std::vector<basis::BoundaryEdge> on(const std::vector<int>& parts) const {
@@ -135,6 +137,7 @@ class Elasticity final : public fem::Problem {
     return out;
   }
   void refuse_rigid_modes(const basis::Geometry& geometry, const fem::DirichletConditions& bc) const;
+  Eigen::VectorXd squares(const fem::Assembler& by, const Eigen::VectorXd& u, const std::vector<char>* only) const;
 
   ElasticityData d_;
   Lame lame_;
@@ -187,8 +190,8 @@ void Elasticity::refuse_rigid_modes(const basis::Geometry& geometry, const fem::
   throw InputError(msg.str());
 }
 
-Eigen::VectorXd Elasticity::error_squares(const fem::Assembler& by, const Eigen::VectorXd& u,
-                                          const std::vector<char>* only) const {
+Eigen::VectorXd Elasticity::squares(const fem::Assembler& by, const Eigen::VectorXd& u,
+                                    const std::vector<char>* only) const {
   const basis::Space& space = by.geometry().space();
   const Lame l = lame_;
   return by.integrate(14, [&](const fem::ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
