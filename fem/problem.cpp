@@ -47,7 +47,7 @@ void ProblemSolver::setup() {
   problem_->check(geometry_);
   const basis::Space& space = geometry_.space();
   r_.problem = problem_->name();
-  r_.dofs = space.num_dofs();
+  r_.dofs = problem_->components() * space.num_dofs();
   r_.elements = space.num_elements();
   sys_->t0 = std::chrono::steady_clock::now();
   sys_->assembler = std::make_unique<Assembler>(geometry_, rules_, problem_->components());

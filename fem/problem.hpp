@@ -66,7 +66,8 @@ Eigen::VectorXd summed_squares(const LinearSystem& system,
 struct ProblemResult {
   std::string problem;              ///< Problem::name()
   Eigen::VectorXd u;                ///< coefficients of the solution in the geometry's space
-  Index dofs = 0, free_dofs = 0, constrained_dofs = 0, elements = 0, quadrature_points = 0;
+  Index dofs = 0;  ///< of the field: components × the space's functions
+  Index free_dofs = 0, constrained_dofs = 0, elements = 0, quadrature_points = 0;
   double domain_measure = 0.0;
   double pattern_seconds = 0.0, assembly_seconds = 0.0, solve_seconds = 0.0, error_seconds = 0.0;
   std::string solver, solver_ordering, error_quadrature;

@@ -106,6 +106,7 @@ using Sampler = std::function<void(Index e, const Eigen::Matrix2Xd& ref, const b
 /// The point arrays of the sampled grid ("u", "grad_u", "exact", "error"; the ones not written are empty).
 struct SampleArrays {
   vtkSmartPointer<vtkDoubleArray> x, u, grad, exact, error;
+  std::vector<vtkSmartPointer<vtkDoubleArray>> fields;  ///< VtuOptions::fields, in order
 };
 
 /// Samples element e into the arrays from point `base` on.
@@ -120,6 +121,19 @@ void sample_element(Index e, const basis::Geometry& geometry, const SamplePatter
   const bool with_grad = a.grad != nullptr, with_exact = a.exact != nullptr;
   if (sample != nullptr) (*sample)(e, p.points, bv, gv, values, with_grad ? &grads : nullptr);
   if (with_exact) options.exact->values(gv.x, exact_values);
+  thread_local Eigen::MatrixXd field;
+  for (std::size_t f = 0; f < options.fields.size(); ++f) {
+    const SampledField& sf = options.fields[f];
+    sf.values(e, bv, gv, field);
+    if (field.rows() != sf.components || field.cols() != p.num_points()) {
+      throw Error("write_vtu: field '" + sf.name + "' gave " + std::to_string(field.rows()) + " × " +
+                  std::to_string(field.cols()) + " values for " + std::to_string(sf.components) + " × " +
+                  std::to_string(p.num_points()));
+    }
+    for (Index k = 0; k < p.num_points(); ++k) {
+      a.fields[f]->SetTypedTuple(static_cast<vtkIdType>(base + k), field.col(k).data());
+    }
+  }
   for (Index k = 0; k < p.num_points(); ++k) {
     const vtkIdType g = static_cast<vtkIdType>(base + k);
     a.x->SetTuple3(g, gv.x(0, k), gv.x(1, k), gv.x(2, k));
@@ -161,6 +175,10 @@ void write_samples(const std::string& path, const basis::Geometry& geometry, con
   if (with_u && with_grad) a.grad = make_double_array("grad_u", 3, total_points);
   if (with_exact) a.exact = make_double_array("exact", 1, total_points);
   if (with_exact && with_u) a.error = make_double_array("error", 1, total_points);
+  for (const SampledField& f : options.fields) {
+    if (f.components < 1 || !f.values) throw InputError("write_vtu: field '" + f.name + "' is empty");
+    a.fields.push_back(make_double_array(f.name.c_str(), f.components, total_points));
+  }
 
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfTuples(static_cast<vtkIdType>(total_cells + 1));
@@ -197,6 +215,7 @@ void write_samples(const std::string& path, const basis::Geometry& geometry, con
   for (const auto& array : {a.u, a.grad, a.exact, a.error}) {
     if (array != nullptr) grid->GetPointData()->AddArray(array);
   }
+  for (const auto& array : a.fields) grid->GetPointData()->AddArray(array);
   if (with_u) grid->GetPointData()->SetActiveScalars("u");
   if (a.grad != nullptr) grid->GetPointData()->SetActiveVectors("grad_u");
   add_element_cell_data(grid, space, element_of_cell, element_data);

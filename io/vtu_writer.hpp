@@ -14,9 +14,21 @@
 
 namespace iga::io {
 
+/// A point array of the sampled grid computed from what the writer evaluated on element e (the basis with first
+/// derivatives and the map at the element's sample points): out is components × q. For fields that are not one
+/// scalar combination of the space's functions: a displacement (3 components, ParaView's Warp By Vector), a
+/// stress tensor (6 components XX, YY, ZZ, XY, YZ, XZ: ParaView's symmetric tensor order), a von Mises stress.
+struct SampledField {
+  std::string name;
+  int components = 1;
+  std::function<void(Index e, const basis::BasisValues& basis, const basis::GeometryValues& geo, Eigen::MatrixXd& out)>
+      values;
+};
+
 struct VtuOptions {
   int samples = 5;                             ///< points per direction on each element (>= 2)
   std::shared_ptr<const fem::Function> exact;  ///< optional exact solution
+  std::vector<SampledField> fields = {};       ///< more point arrays (every write_vtu below writes them)
 };
 
 

@@ -280,4 +280,37 @@ Eigen::Vector3d stress_at(const basis::Geometry& geometry, const Eigen::VectorXd
   return {tr + 2 * lame.mu * exx, tr + 2 * lame.mu * eyy, 2 * lame.mu * exy};
 }
 
+void displacement_and_stress(const basis::Space& space, const Eigen::VectorXd& u, Index e,
+                             const basis::BasisValues& bv, const basis::GeometryValues& gv, Lame lame, double nu_zz,
+                             Eigen::MatrixXd& displacement, Eigen::MatrixXd& stress, Eigen::VectorXd& von_mises) {
+  const auto dofs = space.dofs(e);
+  const Index q = bv.value.cols();
+  Eigen::MatrixXd local(static_cast<Index>(dofs.size()), 2);
+  for (std::size_t a = 0; a < dofs.size(); ++a) {
+    local(static_cast<Index>(a), 0) = u(2 * dofs[a]);
+    local(static_cast<Index>(a), 1) = u(2 * dofs[a] + 1);
+  }
+  displacement.setZero(3, q);
+  displacement.topRows(2) = (bv.value.transpose() * local).transpose();
+  const Eigen::MatrixXd du = bv.du.transpose() * local, dv = bv.dv.transpose() * local;  // q × 2
+  stress.setZero(6, q);
+  von_mises.resize(q);
+  for (Index k = 0; k < q; ++k) {
+    double g[2][2];  // g[c][j] = ∂_j u_c
+    for (int c = 0; c < 2; ++c) {
+      for (int j = 0; j < 2; ++j) g[c][j] = gv.tu(j, k) * du(k, c) + gv.tv(j, k) * dv(k, c);
+    }
+    const double exx = g[0][0], eyy = g[1][1], exy = 0.5 * (g[0][1] + g[1][0]);
+    const double tr = lame.lambda * (exx + eyy);
+    const double sxx = tr + 2 * lame.mu * exx, syy = tr + 2 * lame.mu * eyy, sxy = 2 * lame.mu * exy;
+    const double szz = nu_zz * (sxx + syy);
+    stress(0, k) = sxx;
+    stress(1, k) = syy;
+    stress(2, k) = szz;
+    stress(3, k) = sxy;
+    von_mises(k) = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                             3 * sxy * sxy);
+  }
+}
+
 }  // namespace iga::pde

@@ -52,4 +52,12 @@ std::shared_ptr<const fem::Problem> make_elasticity(ElasticityData data);
 Eigen::Vector3d stress_at(const basis::Geometry& geometry, const Eigen::VectorXd& u, Index e,
                           const Eigen::Vector2d& uv, Lame lame);
 
+/// What a writer shows of a displacement at the points where the basis (with first derivatives) and the map were
+/// evaluated on element e: displacement 3 × q (z = 0), stress 6 × q in ParaView's symmetric-tensor order XX, YY, ZZ,
+/// XY, YZ, XZ (σ_zz = 0 in plane stress, ν (σ_xx + σ_yy) in plane strain: pass nu_zz = ν there, 0 otherwise), and
+/// von Mises' stress (q) of that three-dimensional state.
+void displacement_and_stress(const basis::Space& space, const Eigen::VectorXd& u, Index e,
+                             const basis::BasisValues& bv, const basis::GeometryValues& gv, Lame lame, double nu_zz,
+                             Eigen::MatrixXd& displacement, Eigen::MatrixXd& stress, Eigen::VectorXd& von_mises);
+
 }  // namespace iga::pde

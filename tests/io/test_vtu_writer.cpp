@@ -402,6 +402,49 @@ TEST(VtuWriter, ElementFieldIsWrittenAtTheSamplePoints) {
   EXPECT_THROW(iga::io::sample_points(basis::Shape::Quad, 1), iga::InputError);
 }
 
+TEST(VtuWriter, SampledFieldsOfSeveralComponents) {
+  // A 3-component field (x, 2y, x y) and a 6-component one at the physical sample points; a field of the wrong size
+  // is refused naming it.
+  auto space = std::make_shared<BilinearSpace>(2, 1);
+  const basis::Geometry geometry(space, grid_points(2, 1, /*perturb=*/true));
+  TempDir tmp;
+  iga::io::VtuOptions options;
+  options.samples = 3;
+  options.fields = {{"vector", 3, [](Index, const basis::BasisValues&, const basis::GeometryValues& gv, Eigen::MatrixXd& o) {
+                       o.resize(3, gv.x.cols());
+                       o.row(0) = gv.x.row(0);
+                       o.row(1) = 2 * gv.x.row(1);
+                       o.row(2) = gv.x.row(0).cwiseProduct(gv.x.row(1));
+                     }},
+                    {"tensor", 6, [](Index e, const basis::BasisValues&, const basis::GeometryValues& gv, Eigen::MatrixXd& o) {
+                       o = Eigen::MatrixXd::Constant(6, gv.x.cols(), static_cast<double>(e));
+                     }}};
+  const std::string path = tmp.file("fields.vtu");
+  iga::io::write_vtu(path, geometry, options);
+  auto grid = read_vtu(path);
+  vtkDataArray* v = grid->GetPointData()->GetArray("vector");
+  vtkDataArray* t = grid->GetPointData()->GetArray("tensor");
+  ASSERT_NE(v, nullptr);
+  ASSERT_NE(t, nullptr);
+  EXPECT_EQ(v->GetNumberOfComponents(), 3);
+  EXPECT_EQ(t->GetNumberOfComponents(), 6);
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    double p[3];
+    grid->GetPoint(i, p);
+    EXPECT_NEAR(v->GetComponent(i, 0), p[0], 1e-14);
+    EXPECT_NEAR(v->GetComponent(i, 1), 2 * p[1], 1e-14);
+    EXPECT_NEAR(v->GetComponent(i, 2), p[0] * p[1], 1e-14);
+    EXPECT_EQ(t->GetComponent(i, 5), i < 9 ? 0.0 : 1.0);  // element 0's 9 samples first
+  }
+  options.fields[0].components = 2;
+  try {
+    iga::io::write_vtu(tmp.file("bad.vtu"), geometry, options);
+    FAIL() << "a field of the wrong size was written";
+  } catch (const iga::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("field 'vector'"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SampledWriter, CurvesAreWrittenAsPolylines) {
   iga::io::CurveData c;
   c.points.resize(2, 5);
