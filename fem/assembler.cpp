@@ -55,7 +55,8 @@ void physical_gradients(const basis::BasisValues& b, const basis::GeometryValues
 // The Laplacians (and, planar, the Hessians) from the parametric first and second derivatives of the functions
 // and the map, for all points at once; grad as physical_gradients gives it.
 void second_derivatives(const basis::BasisValues& b, const basis::GeometryValues& g, int dim,
-                        const Eigen::MatrixXd& grad, Eigen::MatrixXd& laplacian, Eigen::MatrixXd& hessian) {
+                        const Eigen::MatrixXd& grad, Eigen::MatrixXd& laplacian, Eigen::MatrixXd& hessian,
+                        bool with_hessian) {
   const Eigen::Index q = b.value.cols();
   thread_local Eigen::ArrayXXd m;  // rows: g11, g12, g22, inverse metric, Christoffel contractions
   m.resize(8, q);
@@ -75,7 +76,7 @@ void second_derivatives(const basis::BasisValues& b, const basis::GeometryValues
   laplacian = (b.duu.array().rowwise() * m.row(3) + b.duv.array().rowwise() * (2 * m.row(4)) +
                    b.dvv.array().rowwise() * m.row(5) - b.du.array().rowwise() * m.row(6) -
                    b.dv.array().rowwise() * m.row(7)).matrix();
-  if (dim != 2) {
+  if (dim != 2 || !with_hessian) {
     hessian.resize(0, 0);
     return;
   }
@@ -112,16 +113,18 @@ void Assembler::field_dofs(Index e, std::vector<Index>& out) const {
   }
 }
 
-int Assembler::needs(std::span<const FormNeeds* const> forms) const {
+std::pair<int, bool> Assembler::needs(std::span<const FormNeeds* const> forms) const {
   int needed = 1;
+  bool hessian = false;
   for (const FormNeeds* form : forms) {
     if (form->components() != components_) {
       throw InputError("assembler: a form for " + std::to_string(form->components()) +
                        " component(s) given to the loop of a field with " + std::to_string(components_));
     }
     needed = std::max(needed, form->derivatives());
+    hessian = hessian || (form->derivatives() >= 2 && form->hessian());
   }
-  return needed;
+  return {needed, hessian};
 }
 
 const AssemblyPlan& Assembler::plan(bool with_pattern) const {
@@ -137,7 +140,7 @@ const AssemblyPlan& Assembler::plan(bool with_pattern) const {
   return *plan_;
 }
 
-void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
+void Assembler::prepare(Index e, ElementContext& ctx, int derivatives, bool hessian) const {
   if (derivatives != 1 && derivatives != 2) {
     throw InputError("element context: derivatives must be 1 or 2, got " + std::to_string(derivatives));
   }
@@ -151,7 +154,7 @@ void Assembler::prepare(Index e, ElementContext& ctx, int derivatives) const {
   ctx.weight = ctx.rule->weights.cwiseProduct(ctx.geo.measure);
   physical_gradients(ctx.basis, ctx.geo, ctx.dim, ctx.grad);
   if (derivatives >= 2) {
-    second_derivatives(ctx.basis, ctx.geo, ctx.dim, ctx.grad, ctx.laplacian, ctx.hessian);
+    second_derivatives(ctx.basis, ctx.geo, ctx.dim, ctx.grad, ctx.laplacian, ctx.hessian, hessian);
   } else {
     ctx.laplacian.resize(0, 0);  // nothing stale from an earlier call with 2
     ctx.hessian.resize(0, 0);
@@ -200,7 +203,7 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
   std::vector<Index> taken;
   std::vector<const FormNeeds*> forms(bilinear.begin(), bilinear.end());
   forms.insert(forms.end(), linear.begin(), linear.end());
-  const int needed = needs(forms);  // the update flags: the largest order any form asks for
+  const auto [needed, hessian] = needs(forms);  // the update flags: the largest order any form asks for
   for (const std::vector<Index>& colour : p.colors) {
     taken.clear();
     for (Index e : colour) {
@@ -210,7 +213,7 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
       const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
       ElementContext& ctx = contexts[t];
       const Index e = taken[static_cast<std::size_t>(i)];
-      prepare(e, ctx, needed);
+      prepare(e, ctx, needed, hessian);
       thread_local std::vector<Index> expanded;
       std::span<const Index> dofs = space.dofs(e);
       if (components_ > 1) {
@@ -251,11 +254,11 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
   std::vector<const FormNeeds*> forms;
   if (bilinear && a) forms.push_back(bilinear);
   if (linear && b) forms.push_back(linear);
-  const int needed = needs(forms);
+  const auto [needed, hessian] = needs(forms);
   std::vector<Index> dofs;
   for (const basis::BoundaryEdge& edge : edges) {
     prepare_side(edge.element, edge.side, 0.0, 1.0, rules_.side_rule(space.kind(edge.element), edge.side), ctx,
-                 needed);
+                 needed, hessian);
     field_dofs(edge.element, dofs);
     const Index nloc = static_cast<Index>(dofs.size());
     if (bilinear && a) {
@@ -280,7 +283,7 @@ void Assembler::assemble_boundary(std::span<const basis::BoundaryEdge> edges, co
 }
 
 void Assembler::prepare_side(Index e, int side, double t0, double t1, const quadrature::Rule1D& line,
-                             BoundaryContext& ctx, int derivatives) const {
+                             BoundaryContext& ctx, int derivatives, bool hessian) const {
   if (derivatives != 1 && derivatives != 2) {
     throw InputError("side context: derivatives must be 1 or 2, got " + std::to_string(derivatives));
   }
@@ -299,7 +302,7 @@ void Assembler::prepare_side(Index e, int side, double t0, double t1, const quad
   geometry_.evaluate(e, ctx.basis, ctx.geo, false, derivatives);
   if (derivatives >= 2) {
     physical_gradients(ctx.basis, ctx.geo, ctx.dim, ctx.grad);
-    second_derivatives(ctx.basis, ctx.geo, ctx.dim, ctx.grad, ctx.laplacian, ctx.hessian);
+    second_derivatives(ctx.basis, ctx.geo, ctx.dim, ctx.grad, ctx.laplacian, ctx.hessian, hessian);
   }
   ctx.weight.resize(q);
   ctx.conormal.resize(3, q);

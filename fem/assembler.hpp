@@ -9,6 +9,7 @@
 #include <mutex>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "basis/geometry.hpp"
@@ -77,12 +78,13 @@ class Assembler {
   /// (unchecked), weight = line weight × |dx/ds|, outward conormal. The whole side is t0 = 0, t1 = 1.
   /// derivatives = 2: also ctx.grad, ctx.laplacian and (planar) ctx.hessian, as prepare() gives them.
   void prepare_side(Index e, int side, double t0, double t1, const quadrature::Rule1D& line, BoundaryContext& ctx,
-                    int derivatives = 1) const;
+                    int derivatives = 1, bool hessian = true) const;
 
   /// Fills ctx for element e at its rule's points (basis with first derivatives, geometry, weights,
   /// physical gradients; with derivatives = 2 also ctx.laplacian and, planar, ctx.hessian — update flags in the
   /// manner of deal.II's).
-  void prepare(Index e, ElementContext& ctx, int derivatives = 1) const;
+  /// hessian = false (with derivatives 2): the Laplacians only, ctx.hessian left empty.
+  void prepare(Index e, ElementContext& ctx, int derivatives = 1, bool hessian = true) const;
 
  private:
   /// Element e's local functions at its rule's points into ctx.basis: evaluated, or derived from the reference
@@ -90,8 +92,9 @@ class Assembler {
   /// derivative order.
   void evaluate_basis(Index e, ElementContext& ctx) const;
 
-  /// The largest derivative order the forms ask for; InputError for a form of other components than the field's.
-  int needs(std::span<const FormNeeds* const> forms) const;
+  /// The largest derivative order the forms ask for and whether one reads Hessians; InputError for a form of other
+  /// components than the field's.
+  std::pair<int, bool> needs(std::span<const FormNeeds* const> forms) const;
 
   const basis::Geometry& geometry_;
   const quadrature::RuleProvider& rules_;

@@ -62,6 +62,9 @@ class FormNeeds {
  public:
   virtual ~FormNeeds() = default;
   virtual int derivatives() const { return 1; }
+  /// With derivatives() 2: whether the form reads the (planar) Hessians, or the Laplacians only (cheaper: the loop
+  /// then skips the Hessians unless another form asks for them).
+  virtual bool hessian() const { return derivatives() >= 2; }
   virtual int components() const { return 1; }
 };
 

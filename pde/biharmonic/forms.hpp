@@ -19,6 +19,7 @@ namespace iga::pde {
 class BiharmonicForm final : public fem::BilinearForm {
  public:
   int derivatives() const override { return 2; }
+  bool hessian() const override { return false; }
   void add(const fem::ElementContext& ctx, Eigen::MatrixXd& local) const override;
 };
 
@@ -27,6 +28,7 @@ class ClampedNitscheForm final : public fem::BoundaryBilinearForm {
  public:
   explicit ClampedNitscheForm(fem::NitschePenalty penalty) : penalty_(std::move(penalty)) {}
   int derivatives() const override { return 2; }
+  bool hessian() const override { return false; }
   void add(const fem::BoundaryContext& ctx, Eigen::MatrixXd& local) const override;
 
  private:
@@ -39,6 +41,7 @@ class ClampedNitscheLoad final : public fem::BoundaryLinearForm {
   ClampedNitscheLoad(std::shared_ptr<const fem::BoundaryFunction> slope, fem::NitschePenalty penalty)
       : slope_(std::move(slope)), penalty_(std::move(penalty)) {}
   int derivatives() const override { return 2; }
+  bool hessian() const override { return false; }
   void add(const fem::BoundaryContext& ctx, Eigen::VectorXd& local) const override;
 
  private:
