@@ -15,38 +15,16 @@
 #include "pde/biharmonic/biharmonic.hpp"
 #include "quadrature/rule_provider.hpp"
 #include "refine/uniform.hpp"
+#include "support/biharmonic_solutions.hpp"
 #include "support/nets.hpp"
 #include "support/rates.hpp"
 
 using namespace iga;
 using std::numbers::pi;
+using test::bump;
+using test::bump_source;
 
 namespace {
-
-// u = sin²(πx) sin²(πy): zero with its normal derivative on the unit square's boundary.
-std::shared_ptr<fem::Function> bump() {
-  auto s = [](double t) { return std::pow(std::sin(pi * t), 2); };
-  auto s1 = [](double t) { return pi * std::sin(2 * pi * t); };
-  auto s2 = [](double t) { return 2 * pi * pi * std::cos(2 * pi * t); };
-  return fem::make_function(
-      [=](const Eigen::Vector3d& x) { return s(x(0)) * s(x(1)); },
-      [=](const Eigen::Vector3d& x) { return Eigen::Vector3d(s1(x(0)) * s(x(1)), s(x(0)) * s1(x(1)), 0); },
-      [=](const Eigen::Vector3d& x) {
-        Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
-        h(0, 0) = s2(x(0)) * s(x(1));
-        h(0, 1) = h(1, 0) = s1(x(0)) * s1(x(1));
-        h(1, 1) = s(x(0)) * s2(x(1));
-        return h;
-      });
-}
-std::shared_ptr<fem::Function> bump_source() {
-  auto s = [](double t) { return std::pow(std::sin(pi * t), 2); };
-  auto s2 = [](double t) { return 2 * pi * pi * std::cos(2 * pi * t); };
-  auto s4 = [](double t) { return -8 * std::pow(pi, 4) * std::cos(2 * pi * t); };
-  return fem::make_function([=](const Eigen::Vector3d& x) {
-    return s4(x(0)) * s(x(1)) + 2 * s2(x(0)) * s2(x(1)) + s(x(0)) * s4(x(1));
-  });
-}
 
 // u = sin(2x) cos(y) + x⁴ y, Δ²u = 25 sin(2x) cos(y) + 24 y: boundary data of every kind non-zero.
 std::shared_ptr<fem::Function> mixed() {
