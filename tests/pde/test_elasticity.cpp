@@ -13,6 +13,8 @@
 #include "core/error.hpp"
 #include "fem/problem.hpp"
 #include "mesh/obj_reader.hpp"
+#include "mesh/three_valent.hpp"
+#include "basis/registry.hpp"
 #include "pde/elasticity/elasticity.hpp"
 #include "pde/elasticity/kirsch.hpp"
 #include "quadrature/per_tile.hpp"
@@ -110,6 +112,16 @@ TEST(Elasticity, LinearPatchTestIsExact) {
                    basis::catmull_clark::make_catmull_clark_geometry(
                        mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj"), "square_evs.obj"),
                    std::make_shared<quadrature::PerTile>(4, 24)});
+  for (const char* backend : {"polyhedral", "halfbox"}) {
+    // Coupled traces on these boundaries: the conditions per component carry the coupling rows.
+    const mesh::PolyMesh square = mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj");
+    const mesh::PolyMesh tri = mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/tri_square.obj");
+    const mesh::PolyMesh net = std::string(backend) == "halfbox" ? mesh::dual_net(tri) : square;
+    basis::BackendFacts facts;
+    const basis::Backend& b = basis::backend(backend);
+    cases.push_back({std::string(backend) + " spline", basis::make_geometry(b, &net, {}, facts),
+                     quadrature::make_rule_provider(b.default_quadrature(basis::degree(b, {})), basis::degree(b, {}) + 1)});
+  }
   for (const Case& c : cases) {
     const std::vector<std::string> names = c.g.space().boundary_part_names();
     std::vector<int> all(names.size());
