@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <optional>
+#include <vector>
 
 #include "basis/bspline/patches.hpp"
 #include "fem/parallel.hpp"

@@ -95,18 +95,25 @@ std::vector<double> nitsche_penalties(const Assembler& assembler, std::span<cons
       [](const ElementContext& ctx) -> const Eigen::MatrixXd& { return ctx.grad; }, 1, equivalent_gamma);
 }
 
+NitschePenalty nitsche_penalty(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges, double gamma,
+                               const SideOperator& side, const ElementOperator& element, int derivatives,
+                               double* used) {
+  if (gamma > 0.0) {
+    if (used) *used = gamma;
+    return [gamma](const BoundaryContext& ctx) { return gamma / ctx.weight.sum(); };
+  }
+  auto beta = std::make_shared<const std::vector<double>>(
+      local_penalties(assembler, edges, side, element, derivatives, used));
+  return [beta](const BoundaryContext& ctx) { return (*beta)[static_cast<std::size_t>(ctx.element)]; };
+}
+
 double nitsche_terms(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges,
                      const std::shared_ptr<const Function>& g, double gamma, Eigen::SparseMatrix<double>& a,
                      Eigen::VectorXd& b) {
-  std::vector<double> beta;
-  NitschePenalty penalty;
   double used = gamma;
-  if (gamma > 0.0) {
-    penalty = [gamma](const BoundaryContext& ctx) { return gamma / ctx.weight.sum(); };
-  } else {
-    beta = nitsche_penalties(assembler, edges, &used);
-    penalty = [&beta](const BoundaryContext& ctx) { return beta[static_cast<std::size_t>(ctx.element)]; };
-  }
+  const NitschePenalty penalty = nitsche_penalty(
+      assembler, edges, gamma, [](const BoundaryContext& ctx, Eigen::MatrixXd& dn) { conormal_derivatives(ctx, dn); },
+      [](const ElementContext& ctx) -> const Eigen::MatrixXd& { return ctx.grad; }, 1, &used);
   const NitscheForm form(penalty);
   const NitscheLoadForm load(g, penalty);
   assembler.assemble_boundary(edges, &form, &load, &a, &b);

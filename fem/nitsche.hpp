@@ -33,6 +33,12 @@ std::vector<double> local_penalties(const Assembler& assembler, std::span<const 
                                     const SideOperator& side, const ElementOperator& element, int derivatives,
                                     double* equivalent_gamma = nullptr);
 
+/// The penalty of a Nitsche form on `edges`: β = γ / h_side when gamma > 0, else β_K = local_penalties(side,
+/// element) (the form's own operators). *used receives γ, or max_K β_K h_K, for the report.
+NitschePenalty nitsche_penalty(const Assembler& assembler, std::span<const basis::BoundaryEdge> edges, double gamma,
+                               const SideOperator& side, const ElementOperator& element, int derivatives,
+                               double* used);
+
 /// Nitsche's terms for u = g on `edges`, to be added to the system: a (num_dofs²) and b (num_dofs) are overwritten.
 /// β = γ / h per side when gamma > 0, else the local estimate above. Returns the γ used (or max_K β_K h_K), for
 /// the report.

@@ -98,18 +98,10 @@ class Biharmonic final : public fem::Problem {
     choices.emplace_back("smoothness", smoothness_);
     const Eigen::SparseMatrix<double> none;
     if (!clamped_.empty()) {
-      fem::NitschePenalty penalty;
-      std::vector<double> beta;
       double gamma = d_.nitsche_penalty;
-      if (gamma > 0.0) {
-        penalty = [gamma](const fem::BoundaryContext& ctx) { return gamma / ctx.weight.sum(); };
-      } else {
-        beta = fem::local_penalties(
-            assembler, clamped_,
-            [](const fem::BoundaryContext& ctx, Eigen::MatrixXd& s) { s = ctx.laplacian; },
-            [](const fem::ElementContext& ctx) -> const Eigen::MatrixXd& { return ctx.laplacian; }, 2, &gamma);
-        penalty = [&beta](const fem::BoundaryContext& ctx) { return beta[static_cast<std::size_t>(ctx.element)]; };
-      }
+      const fem::NitschePenalty penalty = fem::nitsche_penalty(
+          assembler, clamped_, gamma, [](const fem::BoundaryContext& ctx, Eigen::MatrixXd& s) { s = ctx.laplacian; },
+          [](const fem::ElementContext& ctx) -> const Eigen::MatrixXd& { return ctx.laplacian; }, 2, &gamma);
       const std::shared_ptr<const fem::BoundaryFunction> h =
           d_.slope ? d_.slope : fem::normal_flux(fem::constant_function(0.0));
       const ClampedNitscheForm form(penalty);

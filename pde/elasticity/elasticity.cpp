@@ -13,6 +13,13 @@ namespace iga::pde {
 
 namespace {
 
+// σ = (σ_xx, σ_yy, σ_xy) of the displacement gradient g[c][j] = ∂_j u_c: λ tr(ε) I + 2μ ε.
+Eigen::Vector3d stress_of(const double (&g)[2][2], Lame lame) {
+  const double exx = g[0][0], eyy = g[1][1], exy = 0.5 * (g[0][1] + g[1][0]);
+  const double tr = lame.lambda * (exx + eyy);
+  return {tr + 2 * lame.mu * exx, tr + 2 * lame.mu * eyy, 2 * lame.mu * exy};
+}
+
 class Traction final : public fem::BoundaryFunction {
  public:
   Traction(std::array<std::shared_ptr<const fem::Function>, 2> u, Lame lame, int component)
@@ -23,10 +30,9 @@ class Traction final : public fem::BoundaryFunction {
     u_[1]->partial_gradients(x, 2, gy);
     out.resize(x.cols());
     for (Eigen::Index k = 0; k < x.cols(); ++k) {
-      const double exx = gx(0, k), eyy = gy(1, k), exy = 0.5 * (gx(1, k) + gy(0, k));
-      const double tr = lame_.lambda * (exx + eyy);
-      const double sxx = tr + 2 * lame_.mu * exx, syy = tr + 2 * lame_.mu * eyy, sxy = 2 * lame_.mu * exy;
-      out(k) = c_ == 0 ? sxx * n(0, k) + sxy * n(1, k) : sxy * n(0, k) + syy * n(1, k);
+      const double g[2][2] = {{gx(0, k), gx(1, k)}, {gy(0, k), gy(1, k)}};
+      const Eigen::Vector3d sigma = stress_of(g, lame_);
+      out(k) = c_ == 0 ? sigma(0) * n(0, k) + sigma(2) * n(1, k) : sigma(2) * n(0, k) + sigma(1) * n(1, k);
     }
   }
 
@@ -257,27 +263,16 @@ std::shared_ptr<const fem::Problem> make_elasticity(ElasticityData data) {
 
 Eigen::Vector3d stress_at(const basis::Geometry& geometry, const Eigen::VectorXd& u, Index e,
                           const Eigen::Vector2d& uv, Lame lame) {
-  const basis::Space& space = geometry.space();
   Eigen::Matrix2Xd pts(2, 1);
   pts.col(0) = uv;
   basis::BasisValues bv;
   basis::GeometryValues gv;
-  space.evaluate(e, pts, 1, bv);
+  geometry.space().evaluate(e, pts, 1, bv);
   geometry.evaluate(e, bv, gv);
-  const auto dofs = space.dofs(e);
-  double g[2][2] = {{0, 0}, {0, 0}};  // g[c][k] = ∂_k u_c
-  for (std::size_t a = 0; a < dofs.size(); ++a) {
-    const Index i = static_cast<Index>(a);
-    const double dx = bv.du(i, 0) * gv.tu(0, 0) + bv.dv(i, 0) * gv.tv(0, 0);
-    const double dy = bv.du(i, 0) * gv.tu(1, 0) + bv.dv(i, 0) * gv.tv(1, 0);
-    for (int c = 0; c < 2; ++c) {
-      g[c][0] += u(2 * dofs[a] + c) * dx;
-      g[c][1] += u(2 * dofs[a] + c) * dy;
-    }
-  }
-  const double exx = g[0][0], eyy = g[1][1], exy = 0.5 * (g[0][1] + g[1][0]);
-  const double tr = lame.lambda * (exx + eyy);
-  return {tr + 2 * lame.mu * exx, tr + 2 * lame.mu * eyy, 2 * lame.mu * exy};
+  Eigen::MatrixXd displacement, stress;
+  Eigen::VectorXd von_mises;
+  displacement_and_stress(geometry.space(), u, e, bv, gv, lame, 0.0, displacement, stress, von_mises);
+  return {stress(0, 0), stress(1, 0), stress(3, 0)};
 }
 
 void displacement_and_stress(const basis::Space& space, const Eigen::VectorXd& u, Index e,
@@ -300,9 +295,8 @@ void displacement_and_stress(const basis::Space& space, const Eigen::VectorXd& u
     for (int c = 0; c < 2; ++c) {
       for (int j = 0; j < 2; ++j) g[c][j] = gv.tu(j, k) * du(k, c) + gv.tv(j, k) * dv(k, c);
     }
-    const double exx = g[0][0], eyy = g[1][1], exy = 0.5 * (g[0][1] + g[1][0]);
-    const double tr = lame.lambda * (exx + eyy);
-    const double sxx = tr + 2 * lame.mu * exx, syy = tr + 2 * lame.mu * eyy, sxy = 2 * lame.mu * exy;
+    const Eigen::Vector3d sigma = stress_of(g, lame);
+    const double sxx = sigma(0), syy = sigma(1), sxy = sigma(2);
     const double szz = nu_zz * (sxx + syy);
     stress(0, k) = sxx;
     stress(1, k) = syy;
