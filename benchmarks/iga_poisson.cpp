@@ -10,7 +10,6 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
-#include <thread>
 
 #include "basis/registry.hpp"
 #include "benchmarks/study.hpp"
@@ -22,26 +21,27 @@
 #include "fem/poisson.hpp"
 #include "fem/problems.hpp"
 #include "fem/threads.hpp"
+#include "io/discretisation_options.hpp"
 #include "io/program.hpp"
 #include "io/net_writer.hpp"
+#include "io/problem_run.hpp"
 #include "io/progress.hpp"
 #include "io/report.hpp"
 #include "io/vtu_output.hpp"
 #include "io/vtu_writer.hpp"
-#include "mesh/obj_reader.hpp"
 #include "quadrature/rule_provider.hpp"
 #include "refine/adaptive.hpp"
-#include "refine/refine_smooth.hpp"
 #include "refine/uniform.hpp"
 
 namespace {
 
 struct Options {
-  std::string mesh, basis = "bspline", problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
+  iga::io::DiscretisationOptions d;  ///< --basis, --mesh, --degree, --refine, ... (io/discretisation_options.hpp)
+  std::string problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
   std::string petsc_options;
-  std::string quadrature, solver = "cholmod", vtu = "result.vtu", json = "result.json", refine_intervals;
-  std::string geometry, mark = "doerfler", vtu_format = "bezier", net_vtu, cc_boundary = "natural", cc_enrich = "none";
-  int degree = 3, refine = -1, threads = 0, samples = 4, presubdivide = 0;
+  std::string solver = "cholmod", vtu = "result.vtu", json = "result.json";
+  std::string mark = "doerfler", vtu_format = "bezier", net_vtu;
+  int threads = 0, samples = 4;
   int adaptive = -1, admissibility = 2, vtu_degree = 6;
   long long max_dofs = 0;
   double theta = 0.5;
@@ -53,9 +53,7 @@ struct Options {
   std::string study, degrees, study_output = "study", plots = "png,svg";  ///< --study K0:K1 and its options
   bool vtu_given = false, json_given = false;
   bool timer_table = true;  ///< the time per phase on stderr at the end (not for the levels of a study)
-  std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
-  bool count(const std::string& option) const { return std::find(given.begin(), given.end(), option) != given.end(); }
 };
 
 using Log = std::function<void(const std::string&)>;
@@ -65,51 +63,19 @@ Log make_log(const Options& o) {
   };
 }
 
-std::vector<iga::Index> parse_intervals(const std::string& list) {
-  std::vector<iga::Index> intervals;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t used = 0;
-      const long v = std::stol(item, &used);
-      if (used != item.size() || v < 0) throw std::invalid_argument(item);
-      intervals.push_back(v);
-    } catch (const std::exception&) {
-      throw iga::InputError("--refine-intervals: '" + item + "' is not a 0-based interval index");
-    }
-  }
-  return intervals;
-}
-
-// The backend, its options and the coarse net: what every run (and every level of a study) starts from.
-struct Setup {
-  const iga::basis::Backend* backend = nullptr;
-  iga::basis::BackendOptions bo;
-  int degree = 0;
-  std::optional<iga::mesh::PolyMesh> net;
+// The backend, its options and the coarse net (io::Discretisation), and whether this run writes a .vtu.
+struct Setup : iga::io::Discretisation {
   bool write_vtu = false;
 };
 
 Setup make_setup(const Options& o) {
-  using namespace iga;
   Setup s;
-  // The backend from the registry: its options, defaults and construction (no backend policy here).
-  s.backend = &basis::backend(o.basis);
-  basis::check_options(*s.backend, o.given);
-  if (o.count("degree")) s.bo.degree = o.degree;
-  if (o.count("presubdivide")) s.bo.presubdivide = o.presubdivide;
-  if (o.count("geometry")) s.bo.geometry = o.geometry;
-  if (o.count("cc-boundary")) s.bo.cc_boundary = o.cc_boundary;
-  if (o.count("cc-enrich")) s.bo.cc_enrich = o.cc_enrich;
-  s.bo.net_name = o.mesh;
-  s.degree = basis::degree(*s.backend, s.bo);
-  if (!o.mesh.empty()) s.net = mesh::read_obj(o.mesh);
+  static_cast<iga::io::Discretisation&>(s) = iga::io::make_discretisation(o.d);
   s.write_vtu = !o.vtu.empty() && o.vtu != "none";
   return s;
 }
 
-int refine_steps(const Options& o, const Setup& s) { return o.refine >= 0 ? o.refine : s.backend->default_refine; }
+int refine_steps(const Options& o, const Setup& s) { return iga::io::refine_steps(o.d, s); }
 
 // Size before work: the memory of the solve and the output for this many elements, against what is available.
 void check_size(const Options& o, const Setup& s, double elements, const std::string& what) {
@@ -124,27 +90,18 @@ void check_size(const Options& o, const Setup& s, double elements, const std::st
 
 // The elements the refinement will make (each step splits every element in four), checked before it is made.
 void check_predicted_size(const Options& o, const Setup& s) {
-  const int steps = refine_steps(o, s) + (o.count("presubdivide") ? o.presubdivide : 0);
-  const double predicted = (s.net ? static_cast<double>(s.net->num_faces()) : 1.0) * std::pow(4.0, steps);
+  const int steps = refine_steps(o, s) + (o.d.count("presubdivide") ? o.d.presubdivide : 0);
   std::ostringstream what;
-  what << "this run (about " << std::setprecision(3) << predicted << " elements after " << steps << " refinement steps)";
-  check_size(o, s, predicted, what.str());
+  what << "this run (about " << std::setprecision(3) << iga::io::predicted_elements(o.d, s) << " elements after " << steps
+       << " refinement steps)";
+  check_size(o, s, iga::io::predicted_elements(o.d, s), what.str());
 }
 
 iga::refine::Refinement make_geometry(const Options& o, const Setup& s, iga::basis::BackendFacts& facts) {
-  using namespace iga;
-  // --refine-intervals: each step halves only the listed knot intervals, in both directions (refine-and-smooth).
-  const std::vector<Index> intervals = parse_intervals(o.refine_intervals);
-  const int steps = refine_steps(o, s);
-  refine::Refinement refined =
-      basis::make_refined_geometry(*s.backend, s.net ? &*s.net : nullptr, s.bo, intervals.empty() ? steps : 0, facts);
-  for (int k = 0; !intervals.empty() && k < steps; ++k) {
-    refined = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
-  }
-  const basis::Space& space = refined.geometry.space();
-  check_size(o, s, static_cast<double>(std::max(space.num_elements(), space.num_dofs())),
-             "this run (" + std::to_string(space.num_elements()) + " elements, " + std::to_string(space.num_dofs()) + " dofs)");
-  return refined;
+  return iga::io::refined_geometry(o.d, s, facts, [&](iga::Index elements, iga::Index dofs) {
+    check_size(o, s, static_cast<double>(std::max(elements, dofs)),
+               "this run (" + std::to_string(elements) + " elements, " + std::to_string(dofs) + " dofs)");
+  });
 }
 
 // The problem: a built-in manufactured one, or expressions. problem_name: the built-in one's name, or "".
@@ -185,24 +142,6 @@ iga::fem::PoissonProblem make_problem(const Options& o, const iga::basis::Geomet
   problem.dirichlet_method = fem::dirichlet_method(o.dirichlet_method);
   problem.nitsche_penalty = o.nitsche_penalty;
   return problem;
-}
-
-std::unique_ptr<iga::quadrature::RuleProvider> make_rules(const Options& o, const Setup& s) {
-  using namespace iga;
-  std::unique_ptr<quadrature::RuleProvider> rules;
-  try {
-    rules = quadrature::make_rule_provider(o.quadrature.empty() ? s.backend->default_quadrature(s.degree) : o.quadrature, s.degree + 1);
-  } catch (const InputError& e) {
-    throw InputError("--quadrature: " + std::string(e.what()));
-  }
-  if (rules->name().rfind("gauss:", 0) == 0 && std::stoi(rules->name().substr(6)) < s.degree + 1) {
-    // Fewer Gauss points than degree + 1 per direction integrate neither the stiffness nor the boundary mass of
-    // degree-p functions exactly even on affine elements, and leave the latter singular: not an answer to report.
-    throw InputError("--quadrature " + o.quadrature + ": " + rules->name().substr(6) + " points per direction are fewer than degree + 1 = " +
-                     std::to_string(s.degree + 1) + " (the least that integrates the matrices of degree-" +
-                     std::to_string(s.degree) + " functions exactly on affine elements)");
-  }
-  return rules;
 }
 
 // The adaptive loop's convergence over its steps (fem::ConvergenceTable with h = N^(-1/2), N the dofs): per step the
@@ -293,15 +232,7 @@ nlohmann::json report_settings(const Options& o, const Setup& s, const iga::refi
     const iga::fem::ManufacturedProblem mp = iga::fem::manufactured_problem(problem_name, o.reaction);
     builtin_text = {mp.exact_expression, mp.source_expression};
   }
-  j["basis"] = o.basis;
-  j["mesh"] = o.mesh.empty() ? "default:" + (o.geometry.empty() ? std::string("quarter-annulus") : o.geometry) : o.mesh;
-  j["dimension"] = refined.geometry.dim();
-  j["orientation"] = refined.geometry.orientation();
-  j["degree"] = s.degree;
-  j["refine"] = refine_steps(o, s);
-  j["nested_refinement"] = refined.nested;
-  if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
-  for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
+  j.update(iga::io::discretisation_report(o.d, s, refined, facts));
   j["problem"] = {{"name", problem_name.empty() ? nullptr : nlohmann::json(problem_name)},
                   {"source", o.source.empty() ? builtin_text.second : o.source},
                   {"dirichlet", o.dirichlet.empty() ? (o.exact.empty() ? builtin_text.first : o.exact) : o.dirichlet},
@@ -322,23 +253,7 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["quadrature"] = quadrature;
   j["quadrature_points"] = r.quadrature_points;
   if (!r.error_quadrature.empty()) j["error_quadrature"] = r.error_quadrature;
-  j["domain_measure"] = r.domain_measure;
-  j["threads"] = iga::fem::num_threads();
-  j["pattern_seconds"] = r.pattern_seconds;
-  // A distributed run's phases end when the slowest rank's do.
-  j["assembly_seconds"] = iga::fem::max_over_ranks(r.assembly_seconds);
-  j["solve_seconds"] = r.solve_seconds;
-  j["ranks"] = r.ranks;
-  if (r.ranks > 1 || !r.elements_per_rank.empty()) {
-    j["elements_per_rank"] = r.elements_per_rank;
-    j["dofs_per_rank"] = r.dofs_per_rank;
-  }
-  if (!solver.petsc_options.empty()) j["petsc_options"] = solver.petsc_options;
-  j["solver"] = r.solver;
-  j["solver_iterations"] = r.solver_iterations;
-  j["solver_ordering"] = r.solver_ordering;
-  j["residual_norm"] = r.residual_norm;
-  j["residual_tolerance"] = solver.max_residual;
+  iga::io::report_solve(j, r, solver);
   j["dirichlet_edges"] = r.dirichlet_edges;
   j["neumann_edges"] = r.neumann_edges;
   j["mean_zero"] = r.mean_zero;
@@ -390,13 +305,8 @@ nlohmann::json solve_run(const Options& o) {
   if (geometry.orientation() < 0) log("note: the planar net is oriented clockwise (det J < 0); solved as it is (the same solution)");
   std::string problem_name;
   const fem::PoissonProblem problem = make_problem(o, geometry, problem_name);
-  const std::unique_ptr<quadrature::RuleProvider> rules = make_rules(o, s);
-  fem::SolverOptions solver;
-  solver.kind = fem::parse_solver(o.solver);
-  solver.petsc_options = o.petsc_options;
-  if (!o.petsc_options.empty() && solver.kind != fem::SolverKind::Petsc) {
-    throw InputError("--petsc-options: only with --solver petsc");
-  }
+  const std::unique_ptr<quadrature::RuleProvider> rules = iga::io::make_rules(o.d, s);
+  const fem::SolverOptions solver = io::solver_options(o.solver, o.petsc_options);
 
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
       std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
@@ -456,9 +366,9 @@ int study(const Options& o) {
   iga::bench::StudyOptions so;
   so.levels = iga::bench::parse_levels(o.study);
   if (!o.degrees.empty()) so.degrees = iga::bench::parse_degrees(o.degrees);
-  const std::vector<std::string>& takes = iga::basis::backend(o.basis).options;
+  const std::vector<std::string>& takes = iga::basis::backend(o.d.basis).options;
   if (!o.degrees.empty() && std::find(takes.begin(), takes.end(), "degree") == takes.end()) {
-    throw iga::InputError("--degrees: --basis " + o.basis + " has a fixed degree");
+    throw iga::InputError("--degrees: --basis " + o.d.basis + " has a fixed degree");
   }
   if (!o.source.empty() && o.exact.empty()) {
     throw iga::InputError("--study needs an exact solution for its error norms: give --exact with --source (or --problem)");
@@ -470,10 +380,10 @@ int study(const Options& o) {
   so.quiet = o.quiet;
   auto level = [&o](int degree, int refine, const std::string& vtu) {
     Options lo = o;
-    lo.refine = refine;
+    lo.d.refine = refine;
     if (degree > 0) {
-      lo.degree = degree;
-      if (!lo.count("degree")) lo.given.emplace_back("degree");
+      lo.d.degree = degree;
+      if (!lo.d.count("degree")) lo.d.given.emplace_back("degree");
     }
     lo.vtu = vtu.empty() ? "none" : vtu;
     lo.json = "none";
@@ -494,27 +404,12 @@ int study(const Options& o) {
 int main(int argc, char** argv) {
   CLI::App app{"iga-poisson: solve -Δu + c u = f (Laplace–Beltrami on surfaces) with isogeometric elements"};
   Options o;
-  app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline); default: the embedded quarter annulus")
-      ->check(iga::io::input_file());
-  std::vector<std::string> backend_list;
-  std::string backend_help = "basis backend:";
-  for (const auto& b : iga::basis::backends()) {
-    backend_list.push_back(b.name);
-    backend_help += " " + b.name + " (" + b.description + ");";
-  }
-  app.add_option("--basis", o.basis, backend_help)->check(CLI::IsMember(backend_list))->capture_default_str();
-  app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")->check(iga::io::whole_number(1, 12))->capture_default_str();
-  app.add_option("--refine-intervals", o.refine_intervals, "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
-  app.add_option("--refine", o.refine, "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for polyhedral, where each step is a Catmull–Clark step of the net)")->check(iga::io::whole_number(0, 14));
-  app.add_option("--geometry", o.geometry, "bspline without --mesh: the built-in geometry, quarter-annulus (default, exact: NURBS), l-shape ([0,2]^2 minus (1,2]^2, one patch with a C0 line from the reflex corner), square (the unit square), or a patch file FILE.json (README, Patch files)")->check(iga::io::non_blank());
+  iga::io::add_discretisation_options(app, o.d);
   app.add_option("--adaptive", o.adaptive, "adaptive refinement: STEPS rounds of solve, estimate (residual estimator), mark, refine locally (bspline: THB; the --refine steps come first); one .vtu per step plus a .pvd series")->check(iga::io::whole_number(0, 200));
   app.add_option("--theta", o.theta, "--adaptive: marking parameter in (0, 1]")->check(iga::io::finite_number(1e-6, 1.0))->capture_default_str();
   app.add_option("--mark", o.mark, "--adaptive: doerfler (bulk) or max")->check(CLI::IsMember({"doerfler", "max"}))->capture_default_str();
   app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(iga::io::whole_number(0, 1000000000000LL));
   app.add_option("--admissibility", o.admissibility, "--adaptive: class m of admissible meshes (>= 2; 0 refines exactly the marked elements)")->check(CLI::IsMember({0, 2, 3, 4, 5, 6}))->capture_default_str();
-  app.add_option("--cc-boundary", o.cc_boundary, "cc: natural (the limit boundary rule of OpenSubdiv: u_nn = 0 on the boundary, L2 rate 2.5) or clamped (one ring of ghost control points: open knot vector in the normal direction, full order)")->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
-  app.add_option("--cc-enrich", o.cc_enrich, "cc: none or quadratic (three functions per extraordinary vertex, quadratics in the physical coordinates times a C7 cutoff, valence 5 and more and boundary EVs: restores the rates of the regular parts; uniform refinement only)")->check(CLI::IsMember({"none", "quadratic"}))->capture_default_str();
-  app.add_option("--presubdivide", o.presubdivide, "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes <= 8 admissible)")->check(iga::io::whole_number(0, 6));
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
   app.add_option("--problem", o.problem, "built-in manufactured problem (" + names + "); default sine when no --source/--exact")->check(iga::io::non_blank());
@@ -528,7 +423,6 @@ int main(int argc, char** argv) {
   app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms")->check(iga::io::non_blank());
   app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(iga::io::finite_number(0))->capture_default_str();
-  app.add_option("--quadrature", o.quadrature, "quadrature rule: gauss:P (P points per direction) or tiles:P:L (P×P Gauss on each tile of levels 1..L of elements at extraordinary vertices); default gauss:degree+1");
   app.add_option("--solver", o.solver, "cholmod, cg (Eigen, incomplete Cholesky), or petsc (a PETSc KSP, CG + GAMG by default, on the ranks of mpirun: each assembles its own part of a METIS partition)")->capture_default_str();
   app.add_option("--petsc-options", o.petsc_options, "--solver petsc: PETSc options, e.g. '-pc_type hypre' or '-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps' (the PETSC_OPTIONS environment is read too)")->check(iga::io::non_blank());
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
@@ -559,33 +453,15 @@ int main(int argc, char** argv) {
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
-  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary", "cc-enrich"}) {
-    if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
-  }
+  iga::io::record_given_options(app, o.d);
   o.vtu_given = app.count("--vtu") > 0;
   o.json_given = app.count("--json") > 0;
-  return iga::io::run_program("iga-poisson", [&] {
-    // --solver petsc: PETSc on the ranks of mpirun (one without it). PETSc reads no command-line option of its
-    // own (they come through --petsc-options and PETSC_OPTIONS); the other ranks stay silent, errors included.
-    std::optional<iga::fem::ParallelSession> session;
-    if (o.solver == "petsc") {
-      int args = 1;
-      session.emplace(args, argv);
-      if (iga::fem::rank() > 0) {
-        o.quiet = true;
-        std::cerr.setstate(std::ios::failbit);
-      }
-      const int ranks = iga::fem::ranks();
-      if (ranks > 1 && (o.adaptive >= 0 || !o.study.empty())) {
-        throw iga::UnsupportedError(std::string(o.adaptive >= 0 ? "--adaptive" : "--study") +
-                                    " with --solver petsc on more than one rank: not supported yet (run it on one rank)");
-      }
-      if (ranks > 1 && o.threads == 0) o.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / ranks);
+  // --solver petsc: on the ranks of mpirun (one without it), rank 0 speaking for all.
+  return iga::io::run_solver_program("iga-poisson", o.solver == "petsc", argv, o.quiet, o.threads, [&] {
+    if (iga::fem::ranks() > 1 && (o.adaptive >= 0 || !o.study.empty())) {
+      throw iga::UnsupportedError(std::string(o.adaptive >= 0 ? "--adaptive" : "--study") +
+                                  " with --solver petsc on more than one rank: not supported yet (run it on one rank)");
     }
-    const int code = iga::io::run_program("iga-poisson", [&] { return o.study.empty() ? run(o) : study(o); });
-    // mpirun ends the whole job at the first rank that exits non-zero: every rank waits here until rank 0 has
-    // written its lines (its error line included).
-    iga::fem::barrier();
-    return code;
+    return o.study.empty() ? run(o) : study(o);
   });
 }

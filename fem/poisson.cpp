@@ -16,42 +16,19 @@
 
 namespace iga::fem {
 
-namespace {
-
-std::vector<int> parse_parts(const std::string& list, const std::vector<std::string>& names) {
-  std::vector<int> parts;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    if (item.empty()) continue;
-    int found = -1;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-      if (names[i] == item || std::to_string(i) == item) found = static_cast<int>(i);
-    }
-    if (found < 0) {
-      std::string known;
-      for (std::size_t i = 0; i < names.size(); ++i) known += (i ? ", " : "") + names[i];
-      throw InputError("--neumann-boundary: no boundary part '" + item + "' (parts: " + known + ", or their indices)");
-    }
-    parts.push_back(found);
-  }
-  return parts;
-}
-
-}  // namespace
 
 void select_neumann(PoissonProblem& problem, const std::string& neumann, const std::string& boundary,
                     const std::string& where, const std::vector<std::string>& names) {
   if (!neumann.empty()) {
     problem.neumann = std::make_shared<Expression>(neumann, "--neumann", true);
-    problem.neumann_parts = parse_parts(boundary, names);
+    problem.neumann_parts = parse_boundary_parts(boundary, names, "--neumann-boundary");
     if (problem.neumann_parts.empty() && where.empty()) {
       throw InputError("--neumann needs --neumann-boundary or --neumann-where to say where");
     }
   } else if (!boundary.empty() || !where.empty()) {
     if (!problem.exact) throw InputError("--neumann-boundary/--neumann-where need --neumann data (or an exact solution)");
     problem.neumann = normal_flux(problem.exact);
-    problem.neumann_parts = parse_parts(boundary, names);
+    problem.neumann_parts = parse_boundary_parts(boundary, names, "--neumann-boundary");
   }
   if (!where.empty()) problem.neumann_where = std::make_shared<Expression>(where, "--neumann-where");
 }

@@ -1,6 +1,8 @@
 #include "fem/problem.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <sstream>
 #include <optional>
 
 #include "core/error.hpp"
@@ -116,6 +118,37 @@ void ProblemSolver::errors() {
   }
   r_.error_seconds = seconds_since(t0);
   done_ = 4;
+}
+
+std::vector<int> parse_boundary_parts(const std::string& list, const std::vector<std::string>& names,
+                                      const std::string& what) {
+  std::vector<int> parts;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (item.empty()) continue;
+    if (item == "all") {
+      for (std::size_t i = 0; i < names.size(); ++i) parts.push_back(static_cast<int>(i));
+      continue;
+    }
+    int found = -1;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (names[i] == item || std::to_string(i) == item) found = static_cast<int>(i);
+    }
+    if (found < 0) {
+      std::string known;
+      for (std::size_t i = 0; i < names.size(); ++i) known += (i ? ", " : "") + names[i];
+      throw InputError(what + ": no boundary part '" + item + "' (parts: " + known + ", their indices, or all)");
+    }
+    parts.push_back(found);
+  }
+  std::vector<int> once;
+  for (int p : parts) {
+    if (std::find(once.begin(), once.end(), p) == once.end()) once.push_back(p);
+  }
+  return once;
 }
 
 Eigen::VectorXd summed_squares(const LinearSystem& system,

@@ -58,6 +58,12 @@ class Problem {
                                         const LinearSystem& system) const = 0;
 };
 
+/// Boundary parts named in a comma-separated list, by name (Space::boundary_part_names(): "v0", "b0.1", ...) or
+/// 0-based index, or "all"; in the order given, each once. InputError "<what>: no boundary part 'x' (parts: ...)"
+/// naming the option. An empty list gives none.
+std::vector<int> parse_boundary_parts(const std::string& list, const std::vector<std::string>& names,
+                                      const std::string& what);
+
 /// f(only) on each process for its own elements (LinearSystem::run_everywhere: a failure anywhere fails all),
 /// summed over the processes.
 Eigen::VectorXd summed_squares(const LinearSystem& system,

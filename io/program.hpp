@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -21,6 +20,7 @@
 
 #include "core/error.hpp"
 #include "io/report.hpp"
+#include "io/run_program.hpp"
 #include "io/version.hpp"
 
 namespace iga::io {
@@ -140,26 +140,6 @@ inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** arg
     return 2;
   }
   return std::nullopt;
-}
-
-/// Runs body() and turns every exception into one line on stderr and exit code 1.
-template <class Body>
-int run_program(const std::string& program, Body&& body) {
-  try {
-    return body();
-  } catch (const std::bad_alloc&) {
-    std::cerr << program << ": error: out of memory (an allocation failed; a smaller problem, fewer refinements "
-                            "or fewer output samples would fit)" << std::endl;
-  } catch (const std::exception& e) {
-    std::string what = e.what();
-    for (char& c : what) {
-      if (c == '\n') c = ' ';
-    }
-    std::cerr << program << ": error: " << what << std::endl;
-  } catch (...) {
-    std::cerr << program << ": error: unknown failure" << std::endl;
-  }
-  return 1;
 }
 
 namespace detail {

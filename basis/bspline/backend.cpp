@@ -156,8 +156,9 @@ Backend bspline_backend() {
     if (o.geometry.empty() || o.geometry == "quarter-annulus") return bspline::make_quarter_annulus(p);
     if (o.geometry == "l-shape") return bspline::make_l_shape(p);
     if (o.geometry == "square") return bspline::make_rectangle(p);
+    if (o.geometry == "plate-with-hole") return bspline::make_plate_with_hole(p);
     throw InputError("--geometry: unknown built-in geometry '" + o.geometry +
-                     "' (quarter-annulus, l-shape, square, or a patch file FILE.json)");
+                     "' (quarter-annulus, l-shape, square, plate-with-hole, or a patch file FILE.json)");
   };
   b.refine = refine_midpoints;
   b.refine_marked = refine_thb;

@@ -1,0 +1,107 @@
+#include "io/discretisation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "mesh/obj_reader.hpp"
+#include "refine/refine_smooth.hpp"
+
+namespace iga::io {
+
+bool DiscretisationOptions::count(const std::string& option) const {
+  return std::find(given.begin(), given.end(), option) != given.end();
+}
+
+Discretisation make_discretisation(const DiscretisationOptions& o) {
+  Discretisation d;
+  d.backend = &basis::backend(o.basis);
+  basis::check_options(*d.backend, o.given);
+  if (o.count("degree")) d.options.degree = o.degree;
+  if (o.count("presubdivide")) d.options.presubdivide = o.presubdivide;
+  if (o.count("geometry")) d.options.geometry = o.geometry;
+  if (o.count("cc-boundary")) d.options.cc_boundary = o.cc_boundary;
+  if (o.count("cc-enrich")) d.options.cc_enrich = o.cc_enrich;
+  d.options.net_name = o.mesh;
+  d.degree = basis::degree(*d.backend, d.options);
+  if (!o.mesh.empty()) d.net = mesh::read_obj(o.mesh);
+  return d;
+}
+
+int refine_steps(const DiscretisationOptions& o, const Discretisation& d) {
+  return o.refine >= 0 ? o.refine : d.backend->default_refine;
+}
+
+double predicted_elements(const DiscretisationOptions& o, const Discretisation& d) {
+  const int steps = refine_steps(o, d) + (o.count("presubdivide") ? o.presubdivide : 0);
+  return (d.net ? static_cast<double>(d.net->num_faces()) : 1.0) * std::pow(4.0, steps);
+}
+
+std::vector<Index> parse_intervals(const std::string& list) {
+  std::vector<Index> intervals;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t used = 0;
+      const long v = std::stol(item, &used);
+      if (used != item.size() || v < 0) throw std::invalid_argument(item);
+      intervals.push_back(v);
+    } catch (const std::exception&) {
+      throw InputError("--refine-intervals: '" + item + "' is not a 0-based interval index");
+    }
+  }
+  return intervals;
+}
+
+basis::Refinement refined_geometry(const DiscretisationOptions& o, const Discretisation& d, basis::BackendFacts& facts,
+                                   const std::function<void(Index elements, Index dofs)>& check) {
+  // --refine-intervals: each step halves only the listed knot intervals, in both directions (refine-and-smooth).
+  const std::vector<Index> intervals = parse_intervals(o.refine_intervals);
+  const int steps = refine_steps(o, d);
+  basis::Refinement refined = basis::make_refined_geometry(*d.backend, d.net ? &*d.net : nullptr, d.options,
+                                                           intervals.empty() ? steps : 0, facts);
+  for (int k = 0; !intervals.empty() && k < steps; ++k) {
+    refined = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
+  }
+  if (check) check(refined.geometry.space().num_elements(), refined.geometry.space().num_dofs());
+  return refined;
+}
+
+std::unique_ptr<quadrature::RuleProvider> make_rules(const DiscretisationOptions& o, const Discretisation& d) {
+  std::unique_ptr<quadrature::RuleProvider> rules;
+  try {
+    rules = quadrature::make_rule_provider(o.quadrature.empty() ? d.backend->default_quadrature(d.degree) : o.quadrature,
+                                           d.degree + 1);
+  } catch (const InputError& e) {
+    throw InputError("--quadrature: " + std::string(e.what()));
+  }
+  if (rules->name().rfind("gauss:", 0) == 0 && std::stoi(rules->name().substr(6)) < d.degree + 1) {
+    // Fewer Gauss points than degree + 1 per direction integrate neither the stiffness nor the boundary mass of
+    // degree-p functions exactly even on affine elements, and leave the latter singular: not an answer to report.
+    throw InputError("--quadrature " + o.quadrature + ": " + rules->name().substr(6) +
+                     " points per direction are fewer than degree + 1 = " + std::to_string(d.degree + 1) +
+                     " (the least that integrates the matrices of degree-" + std::to_string(d.degree) +
+                     " functions exactly on affine elements)");
+  }
+  return rules;
+}
+
+nlohmann::json discretisation_report(const DiscretisationOptions& o, const Discretisation& d,
+                                     const basis::Refinement& refined, const basis::BackendFacts& facts) {
+  nlohmann::json j;
+  j["basis"] = o.basis;
+  j["mesh"] = o.mesh.empty() ? "default:" + (d.options.geometry.empty() ? std::string("quarter-annulus") : d.options.geometry)
+                             : o.mesh;
+  j["dimension"] = refined.geometry.dim();
+  j["orientation"] = refined.geometry.orientation();
+  j["degree"] = d.degree;
+  j["refine"] = refine_steps(o, d);
+  j["nested_refinement"] = refined.nested;
+  if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
+  for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
+  return j;
+}
+
+}  // namespace iga::io

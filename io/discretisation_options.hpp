@@ -1,0 +1,82 @@
+#pragma once
+// The command-line options of a solver program's discretisation (io/discretisation.hpp), the same words in every
+// program: --mesh, --basis, --degree, --refine, --refine-intervals, --geometry, --cc-boundary, --cc-enrich,
+// --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "io/discretisation.hpp"
+#include "io/problem_run.hpp"
+#include "io/program.hpp"
+
+namespace iga::io {
+
+/// Adds the options to app, writing into o.
+inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) {
+  app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline); default: the backend's built-in geometry")
+      ->check(input_file());
+  std::vector<std::string> backend_list;
+  std::string backend_help = "basis backend:";
+  for (const auto& b : basis::backends()) {
+    backend_list.push_back(b.name);
+    backend_help += " " + b.name + " (" + b.description + ");";
+  }
+  app.add_option("--basis", o.basis, backend_help)->check(CLI::IsMember(backend_list))->capture_default_str();
+  app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")
+      ->check(whole_number(1, 12))->capture_default_str();
+  app.add_option("--refine-intervals", o.refine_intervals,
+                 "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
+  app.add_option("--refine", o.refine,
+                 "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for "
+                 "polyhedral, where each step is a Catmull–Clark step of the net)")
+      ->check(whole_number(0, 14));
+  app.add_option("--geometry", o.geometry,
+                 "bspline without --mesh: the built-in geometry, quarter-annulus (default, exact: NURBS), l-shape ([0,2]^2 "
+                 "minus (1,2]^2, one patch with a C0 line from the reflex corner), square (the unit square), "
+                 "plate-with-hole ([0,4]^2 minus the disc r < 1, exact: NURBS), or a patch file FILE.json (README, Patch files)")
+      ->check(non_blank());
+  app.add_option("--cc-boundary", o.cc_boundary,
+                 "cc: natural (the limit boundary rule of OpenSubdiv: u_nn = 0 on the boundary, L2 rate 2.5) or clamped (one "
+                 "ring of ghost control points: open knot vector in the normal direction, full order)")
+      ->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
+  app.add_option("--cc-enrich", o.cc_enrich,
+                 "cc: none or quadratic (three functions per extraordinary vertex, quadratics in the physical coordinates "
+                 "times a C7 cutoff, valence 5 and more and boundary EVs: restores the rates of the regular parts; uniform "
+                 "refinement only)")
+      ->check(CLI::IsMember({"none", "quadratic"}))->capture_default_str();
+  app.add_option("--presubdivide", o.presubdivide,
+                 "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes "
+                 "<= 8 admissible)")
+      ->check(whole_number(0, 6));
+  app.add_option("--quadrature", o.quadrature,
+                 "quadrature rule: gauss:P (P points per direction) or tiles:P:L (P×P Gauss on each tile of levels 1..L of "
+                 "elements at extraordinary vertices); default gauss:degree+1");
+}
+
+/// After parsing: the backend options the user gave (only these reach the backend, which refuses the ones it does
+/// not take).
+inline void record_given_options(const CLI::App& app, DiscretisationOptions& o) {
+  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary", "cc-enrich"}) {
+    if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
+  }
+}
+
+/// --solver, --petsc-options, --threads and --max-memory of a PDE program (io/problem_run.hpp).
+inline void add_solver_options(CLI::App& app, ProblemProgram& run) {
+  app.add_option("--solver", run.solver,
+                 "cholmod, cg (Eigen, incomplete Cholesky), or petsc (a PETSc KSP, CG + GAMG by default, on the ranks of "
+                 "mpirun: each assembles its own part of a METIS partition)")
+      ->check(CLI::IsMember({"cholmod", "cg", "petsc"}))->capture_default_str();
+  app.add_option("--petsc-options", run.petsc_options,
+                 "--solver petsc: PETSc options, e.g. '-pc_type hypre' (the PETSC_OPTIONS environment is read too)")
+      ->check(non_blank());
+  app.add_option("--threads", run.threads, "threads for assembly (default: OpenMP's)")->check(thread_count());
+  app.add_option("--max-memory", run.max_memory,
+                 "GiB this run may use (default: what the system has available); a run predicted to need more is refused "
+                 "before it starts")
+      ->check(finite_number(0.001, 1e6));
+}
+
+}  // namespace iga::io
