@@ -307,4 +307,18 @@ void displacement_and_stress(const basis::Space& space, const Eigen::VectorXd& u
   }
 }
 
+std::function<void(Index e, const basis::BasisValues& bv, const basis::GeometryValues& gv, Eigen::MatrixXd& out)>
+elasticity_sampler(const basis::Space& space, const Eigen::VectorXd& u, Lame lame, double nu_zz, int which) {
+  if (which < 0 || which > 2) throw InputError("elasticity_sampler: which must be 0, 1 or 2");
+  return [&space, &u, lame, nu_zz, which](Index e, const basis::BasisValues& bv, const basis::GeometryValues& gv,
+                                           Eigen::MatrixXd& out) {
+    Eigen::MatrixXd displacement, stress;
+    Eigen::VectorXd von_mises;
+    displacement_and_stress(space, u, e, bv, gv, lame, nu_zz, displacement, stress, von_mises);
+    if (which == 0) out = displacement;
+    if (which == 1) out = stress;
+    if (which == 2) out = von_mises.transpose();
+  };
+}
+
 }  // namespace iga::pde

@@ -4,6 +4,7 @@
 // onto the traces, coupled where the traces are: polyhedral and half-box boundaries), tractions t(x, n) on named
 // parts (natural), traction-free elsewhere. The forms: pde/elasticity/forms.hpp.
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -59,5 +60,10 @@ Eigen::Vector3d stress_at(const basis::Geometry& geometry, const Eigen::VectorXd
 void displacement_and_stress(const basis::Space& space, const Eigen::VectorXd& u, Index e,
                              const basis::BasisValues& bv, const basis::GeometryValues& gv, Lame lame, double nu_zz,
                              Eigen::MatrixXd& displacement, Eigen::MatrixXd& stress, Eigen::VectorXd& von_mises);
+
+/// One of displacement_and_stress's outputs as a sampled writer's field values (io::SampledField::values): which 0 the
+/// displacement (3 × q), 1 the stress (6 × q), 2 von Mises' stress (1 × q). Keeps references to space and u.
+std::function<void(Index e, const basis::BasisValues& bv, const basis::GeometryValues& gv, Eigen::MatrixXd& out)>
+elasticity_sampler(const basis::Space& space, const Eigen::VectorXd& u, Lame lame, double nu_zz, int which);
 
 }  // namespace iga::pde

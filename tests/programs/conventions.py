@@ -24,6 +24,9 @@ import tempfile
 # {curve} a valid B-spline curve JSON.
 PROGRAMS = {
     "iga-poisson": ("--degree 2 --refine 1 --vtu none --json none", "--basis cc --mesh {bad} --vtu none --json none", "--json"),
+    "iga-biharmonic": ("--geometry square --refine 2 --vtu none --json none", "--basis cc --mesh {bad} --vtu none --json none",
+                       "--json"),
+    "iga-elasticity": ("--refine 1 --vtu none --json none", "--basis cc --mesh {bad} --vtu none --json none", "--json"),
     "iga-bem": ("--refine 1 --vtu none --boundary-vtu none --json none", "--basis cc --mesh {bad} --vtu none --json none",
                 "--json"),
     "iga-quadrature": ("--mesh {data}/meshes/square_evs.obj --quantity area --json none", "--mesh {bad}", "--json"),

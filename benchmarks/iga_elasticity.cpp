@@ -1,0 +1,125 @@
+// iga-elasticity: plane linear elasticity −div σ(u) = b (plane strain or plane stress) with displacement conditions
+// per component and tractions on named boundary parts; by default Kirsch's plate with a hole on the exact NURBS
+// quarter plate. Thin: parses options and calls the library (pde/elasticity/input.hpp, io/problem_run.hpp).
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "fem/memory.hpp"
+#include "fem/parallel.hpp"
+#include "io/discretisation_options.hpp"
+#include "io/problem_run.hpp"
+#include "io/program.hpp"
+#include "io/report.hpp"
+#include "io/vtk_file.hpp"
+#include "io/vtu_writer.hpp"
+#include "pde/elasticity/input.hpp"
+
+namespace {
+
+struct Options {
+  iga::io::ProblemProgram run{"iga-elasticity"};
+  iga::pde::ElasticityInput input;
+  std::string vtu = "result.vtu", json = "result.json", vtu_format = "linear";
+  int samples = 4, adaptive = -1;
+};
+
+int run(Options& o) {
+  using namespace iga;
+  if (o.adaptive >= 0) {
+    throw UnsupportedError("--adaptive: elasticity has no error estimator yet (adaptive refinement is iga-poisson's); use --refine");
+  }
+  if (o.input.problem.empty() && o.input.body_force.empty() && o.input.exact.empty() && o.input.displacement.empty() &&
+      o.input.traction.empty()) {
+    o.input.problem = "kirsch";  // the default run
+  }
+  o.run.components = 2;
+  const bool write_vtu = io::writes(o.vtu);
+  if (write_vtu) o.run.output_bytes_per_element = 10.0 * fem::vtu_memory(1.0, o.samples);  // 10 values per point
+  pde::Lame material;
+  double nu_zz = 0.0;
+  o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {
+    pde::ElasticityData data = pde::elasticity_data(o.input, geometry, report["problem"]);
+    material = pde::lame(data.young, data.poisson, data.model);
+    nu_zz = data.model == pde::PlaneModel::kStrain ? data.poisson : 0.0;
+    return pde::make_elasticity(std::move(data));
+  };
+  if (write_vtu) o.run.output = [&](const basis::Geometry& geometry, const fem::ProblemResult& r, nlohmann::json& report) {
+    // Displacement (a 3-vector for ParaView's Warp By Vector), stress (a symmetric tensor) and von Mises' stress.
+    io::VtuOptions out;
+    out.samples = o.samples;
+    const auto field = [&](int which) { return pde::elasticity_sampler(geometry.space(), r.u, material, nu_zz, which); };
+    out.fields = {{"displacement", 3, field(0)}, {"stress", 6, field(1)}, {"von_mises", 1, field(2)}};
+    io::Pieces pieces;
+    if (r.ranks > 1) pieces = {fem::rank(), r.ranks, r.element_owner};
+    io::write_vtu(o.vtu, geometry, out, {}, pieces);
+    report["vtu_output"] = {{"format", "linear"}, {"samples", o.samples}, {"fields", {"displacement", "stress", "von_mises"}}};
+    report["vtu"] = r.ranks > 1 ? io::summary_path(o.vtu) : o.vtu;
+    if (!o.run.quiet) std::cerr << "iga-elasticity: wrote " << report["vtu"].get<std::string>() << std::endl;
+  };
+  const nlohmann::json report = io::run_problem_program(o.run);
+  if (io::writes(o.json) && fem::rank() == 0) {
+    io::write_json(o.json, report);
+    if (!o.run.quiet) std::cerr << "iga-elasticity: wrote " << o.json << std::endl;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"iga-elasticity: plane linear elasticity −div σ(u) = b with isogeometric elements"};
+  Options o;
+  iga::io::add_discretisation_options(app, o.run.discretisation);
+  app.add_option("--young", o.input.young, "Young's modulus E > 0")->check(iga::io::finite_number(0.0))->capture_default_str();
+  app.add_option("--poisson-ratio", o.input.poisson, "Poisson's ratio ν in (−1, 0.5)")->check(iga::io::finite_number(-1.0, 0.5))
+      ->capture_default_str();
+  app.add_option("--model", o.input.model, "strain (plane strain) or stress (plane stress)")
+      ->check(CLI::IsMember({"strain", "stress"}))->capture_default_str();
+  app.add_option("--problem", o.input.problem,
+                 "built-in problem: kirsch (the infinite plate with a hole of radius 1 about the origin under tension "
+                 "--tension along x, Kirsch's exact solution; default when no condition or expression is given)")
+      ->check(CLI::IsMember(iga::pde::elasticity_problem_names()));
+  app.add_option("--tension", o.input.tension, "--problem kirsch: the far-field tension T")->check(iga::io::finite_number(-INFINITY))
+      ->capture_default_str();
+  app.add_option("--body-force", o.input.body_force, "body force 'BX; BY' (expressions in x, y)")->check(iga::io::non_blank());
+  app.add_option("--exact", o.input.exact, "exact displacement 'UX; UY': the error norms (L2, H1, energy) and the data conditions leave out")
+      ->check(iga::io::non_blank());
+  app.add_option("--displacement", o.input.displacement,
+                 "'C; PARTS[; VALUE]': u_C = VALUE (default: --exact's component, else 0) on the comma-separated boundary "
+                 "parts (bspline: v0,u1,v1,u0; cc: b<loop>.<segment>; or indices or all), C x or y; repeatable, one per component")
+      ->check(iga::io::non_blank());
+  app.add_option("--traction", o.input.traction,
+                 "'PARTS[; TX; TY]': traction t = σn (expressions in x, y, nx, ny; default: --exact's) on the parts; "
+                 "repeatable; parts without a condition are traction-free")
+      ->check(iga::io::non_blank());
+  app.add_option("--adaptive", o.adaptive, "not for elasticity yet (no error estimator): refused with a message")
+      ->check(iga::io::whole_number(0, 200));
+  iga::io::add_solver_options(app, o.run);
+  app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip): displacement, stress (XX, YY, ZZ, XY, YZ, XZ), von_mises")
+      ->capture_default_str();
+  app.add_option("--vtu-format", o.vtu_format, "linear (--vtu-samples linear cells per element); the Bézier output of "
+                 "vector and tensor fields is not written yet")
+      ->check(CLI::IsMember({"linear"}))->capture_default_str();
+  app.add_option("--vtu-samples", o.samples, "sample points per direction per element")->check(iga::io::whole_number(2, 64))
+      ->capture_default_str();
+  app.add_option("--json", o.json, "JSON report file ('-': standard output, 'none' to skip)")->capture_default_str();
+  iga::io::CommonOptions common{"iga-elasticity"};
+  iga::io::add_common_options(app, common);
+  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  o.run.quiet = common.quiet;
+  o.run.run_info = iga::io::run_info(app, common.program);
+  iga::io::record_given_options(app, o.run.discretisation);
+  // Without --mesh and --geometry, a backend that has built-in geometries gives the plate with a hole.
+  const auto& takes = iga::basis::backend(o.run.discretisation.basis).options;
+  if (o.run.discretisation.mesh.empty() && !o.run.discretisation.count("geometry") &&
+      std::find(takes.begin(), takes.end(), "geometry") != takes.end()) {
+    o.run.discretisation.geometry = "plate-with-hole";
+    o.run.discretisation.given.emplace_back("geometry");
+  }
+  return iga::io::run_solver_program("iga-elasticity", o.run.solver == "petsc", argv, o.run.quiet, o.run.threads,
+                                     [&] { return run(o); });
+}

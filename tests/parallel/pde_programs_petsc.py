@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""iga-biharmonic and iga-elasticity with --solver petsc under mpirun at 2 ranks (one OpenMP thread each): every
+error figure of the report against a serial CHOLMOD run of the same problem to 1e-8 (relative), the ranks' shares
+adding up to the whole, and the .pvtu with one piece per rank.
+Usage: pde_programs_petsc.py IGA_BIHARMONIC IGA_ELASTICITY MPIEXEC WORKDIR"""
+import json
+import os
+import subprocess
+import sys
+
+biharmonic, elasticity, mpiexec, work = sys.argv[1:5]
+os.makedirs(work, exist_ok=True)
+env = dict(os.environ, OMP_NUM_THREADS="1")
+mpirun = [mpiexec, "-q", "--allow-run-as-root", "--oversubscribe", "-np", "2"]
+failures = []
+
+
+def run(cmd):
+    return subprocess.run(cmd, cwd=work, env=env, capture_output=True, text=True, timeout=300)
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+
+
+for exe, args in ((biharmonic, ["--refine", "4", "--simply-supported", "v0"]), (elasticity, ["--refine", "4"])):
+    name = os.path.basename(exe)
+    serial = run([exe] + args + ["--quiet", "--vtu", "none", "--json", name + "_serial.json"])
+    check(serial.returncode == 0, f"{name} serial: {serial.stderr}")
+    r = run(mpirun + [exe] + args + ["--quiet", "--solver", "petsc", "--vtu", name + ".vtu", "--json", name + ".json"])
+    check(r.returncode == 0, f"{name} on 2 ranks: exit {r.returncode}: {r.stderr}")
+    if serial.returncode != 0 or r.returncode != 0:
+        continue
+    s = json.load(open(os.path.join(work, name + "_serial.json")))
+    p = json.load(open(os.path.join(work, name + ".json")))
+    check(p["ranks"] == 2 and p["solver"] == "petsc-cg-gamg" and p["solver_iterations"] > 0,
+          f"{name}: ranks {p['ranks']}, solver {p['solver']}, {p['solver_iterations']} iterations")
+    check(sum(p["elements_per_rank"]) == s["elements"] and sum(p["dofs_per_rank"]) == s["dofs"],
+          f"{name}: the ranks' elements {p['elements_per_rank']} and dofs {p['dofs_per_rank']} do not add up")
+    check(len(s["errors"]) >= 3 and p["error_order"] == s["error_order"], f"{name}: error figures {p['error_order']}")
+    for key, e in s["errors"].items():
+        q = p["errors"][key]["error"]
+        check(abs(q - e["error"]) <= 1e-8 * e["error"], f"{name}: {key} error {q} against CHOLMOD's {e['error']}")
+    check(p["vtu"].endswith(".pvtu") and all(os.path.exists(os.path.join(work, f"{name}_{k}.vtu")) for k in (0, 1)),
+          f"{name}: the .pvtu and its two pieces: {p.get('vtu')}")
+
+if failures:
+    print("\n".join(failures))
+    sys.exit(1)
+print("iga-biharmonic and iga-elasticity on PETSc over 2 ranks agree with CHOLMOD")
