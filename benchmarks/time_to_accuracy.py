@@ -60,6 +60,56 @@ def at_target(points, target):
     return None
 
 
+def target_cells(curves, targets):
+    """{configuration: [cell per target]} for a study's table: dofs and seconds at each target (at_target), with the
+    ratios of time and dofs to the fastest deal.II configuration at that target for the others; "not reached (error
+    at dofs)" where a curve does not get there. curves: {name: [(dofs, error, seconds), ...]}, deal.II's names
+    starting with "deal.II"."""
+    best = {}
+    for t in targets:
+        hits = [(at_target(p, t), n) for n, p in curves.items() if n.startswith("deal.II")]
+        hits = [(h, n) for h, n in hits if h]
+        best[t] = min(hits, key=lambda x: x[0][1]) if hits else None
+    out = {}
+    for name, points in curves.items():
+        cells = []
+        for t in targets:
+            hit = at_target(points, t)
+            if not hit:
+                cells.append(f"not reached ({points[-1][1]:.1e} at {points[-1][0]:,} dofs)")
+                continue
+            cell = f"{hit[1]:.3f} s, {hit[0]:,.0f} dofs"
+            if best[t] and not name.startswith("deal.II"):
+                (bd, bs), bname = best[t]
+                cell += f" ({hit[1] / bs:.2f}× time, {hit[0] / bd:.2f}× dofs of {bname.split()[-1]})"
+            cells.append(cell)
+        out[name] = cells
+    return out
+
+
+def plot_curves(curves, targets, ylabel, title, path):
+    """Error against dofs and against seconds, one line per configuration (deal.II's dashed), the targets marked."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for name, points in curves.items():
+        style = "--" if name.startswith("deal.II") else "-"
+        axes[0].loglog([p[0] for p in points], [p[1] for p in points], style, marker="o", ms=3, label=name)
+        axes[1].loglog([p[2] for p in points], [p[1] for p in points], style, marker="o", ms=3, label=name)
+    for ax, xlabel in zip(axes, ("dofs", "seconds (one thread, without error norms)")):
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, which="major", alpha=0.3)
+        for t in targets:
+            ax.axhline(t, color="grey", lw=0.6)
+    axes[1].legend(fontsize=7)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
     repeats = int(sys.argv[sys.argv.index("--repeats") + 1]) if "--repeats" in sys.argv else 3

@@ -2,6 +2,7 @@
 // deflection and Kirsch's hole read back from the .vtu with VTK's reader, the linear patch test given as expressions,
 // and the refusals as one line.
 #include "support/paths.hpp"
+#include "support/program_run.hpp"
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -29,10 +30,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int code;
-  std::string err;
-};
+using iga::test::Outcome;
 
 class PdePrograms : public ::testing::Test {
  protected:
@@ -42,15 +40,7 @@ class PdePrograms : public ::testing::Test {
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  Outcome run(const char* exe, const std::string& args) {
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string cmd = "cd '" + dir_.string() + "' && '" + exe + "' " + args + " 2> '" + err.string() + "' > /dev/null";
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(err);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return {WEXITSTATUS(status), ss.str()};
-  }
+  Outcome run(const char* exe, const std::string& args) { return iga::test::run_program(dir_, exe, args); }
   nlohmann::json report(const std::string& name = "result.json") {
     std::ifstream in(dir_ / name);
     return nlohmann::json::parse(in);

@@ -1,5 +1,6 @@
 // iga-poisson end to end: the .vtu read back with VTK's XML reader, the JSON report, one clear error line.
 #include "support/paths.hpp"
+#include "support/program_run.hpp"
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -29,10 +30,7 @@
 namespace fs = std::filesystem;
 
 namespace {
-struct Outcome {
-  int code;
-  std::string err;
-};
+using iga::test::Outcome;
 
 class IgaPoisson : public ::testing::Test {
  protected:
@@ -42,15 +40,7 @@ class IgaPoisson : public ::testing::Test {
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  Outcome run(const std::string& args) {
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string cmd = "cd '" + dir_.string() + "' && '" + IGA_POISSON_EXE + "' " + args + " 2> '" + err.string() + "' > /dev/null";
-    const int status = std::system(cmd.c_str());
-    std::ifstream in(err);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return {WEXITSTATUS(status), ss.str()};
-  }
+  Outcome run(const std::string& args) { return iga::test::run_program(dir_, IGA_POISSON_EXE, args); }
   nlohmann::json report(const std::string& name = "result.json") {
     std::ifstream in(dir_ / name);
     return nlohmann::json::parse(in);
