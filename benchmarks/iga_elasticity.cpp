@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
   Options o;
   iga::io::add_discretisation_options(app, o.run.discretisation);
   app.add_option("--young", o.input.young, "Young's modulus E > 0")->check(iga::io::finite_number(0.0))->capture_default_str();
-  app.add_option("--poisson-ratio", o.input.poisson, "Poisson's ratio ν in (−1, 0.5)")->check(iga::io::finite_number(-1.0, 0.5))
+  app.add_option("--poisson-ratio", o.input.poisson, "Poisson's ratio ν in (−1, 0.5) (plane stress: (−1, 0.5])")->check(iga::io::finite_number(-1.0, 0.5))
       ->capture_default_str();
   app.add_option("--model", o.input.model, "strain (plane strain) or stress (plane stress)")
       ->check(CLI::IsMember({"strain", "stress"}))->capture_default_str();

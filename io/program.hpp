@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -24,6 +25,24 @@
 #include "io/version.hpp"
 
 namespace iga::io {
+
+namespace detail {
+/// Set when an input file named on the command line is missing or not a file: parse_command_line then exits 1 (bad
+/// input), not 2 (a usage error).
+inline bool& input_file_missing() {
+  static bool missing = false;
+  return missing;
+}
+/// What is wrong with an input file's path ("no such file: X", "a folder, not a file: X"), or "" ("-" is stdin).
+inline std::string input_file_problem(const std::string& path) {
+  if (path == "-") return std::string();
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status)) return "a folder, not a file: " + path;
+  if (!std::filesystem::exists(status)) return "no such file: " + path;
+  return std::string();
+}
+}  // namespace detail
 
 /// The options every iga-* program has (README, "Conventions of every program").
 struct CommonOptions {
@@ -104,10 +123,23 @@ inline nlohmann::json run_info(const CLI::App& app, const std::string& program) 
 }
 
 /// Parses argv. Returns an exit code when the program must stop now: 0 after --help or --version, 2 (one line on
-/// stderr) on a usage error (CLI11's own codes mapped), 1 when --export-config cannot be written; std::nullopt
+/// stderr) on a usage error (CLI11's own codes mapped), 1 (one line) for an input file or --config file that is not
+/// there or is a folder, 1 when --export-config cannot be written; std::nullopt
 /// when the run goes on.
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CommonOptions& common) {
   const std::string& program = common.program;
+  // --config FILE: a file that is not there is bad input, said in the words of input_file().
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    std::string file;
+    if (arg == "--config" && i + 1 < argc) file = argv[i + 1];
+    if (arg.rfind("--config=", 0) == 0) file = arg.substr(9);
+    const std::string problem = file.empty() ? std::string() : detail::input_file_problem(file);
+    if (!problem.empty()) {
+      std::cerr << program << ": error: --config: " << problem << std::endl;
+      return 1;
+    }
+  }
   try {
     app.parse(argc, argv);
     if (!common.export_config.empty() && common.export_config != "none") {
@@ -137,7 +169,9 @@ inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** arg
       if (c == '\n') c = ' ';
     }
     std::cerr << program << ": error: " << what << std::endl;
-    return 2;
+    // A file that is not there (an input option's, or --config's) is bad input, not a usage error.
+    const bool missing_file = detail::input_file_missing() || dynamic_cast<const CLI::FileError*>(&e) != nullptr;
+    return missing_file ? 1 : 2;
   }
   return std::nullopt;
 }
@@ -221,10 +255,16 @@ inline CLI::Validator thread_count() {
       "1.." + std::to_string(most));
 }
 
-/// An input file that exists, or "-" for standard input (the iga-* convention).
+/// An input file that exists and is a file, or "-" for standard input (the iga-* convention). One that is not there
+/// is bad input: exit code 1, like a file that cannot be read.
 inline CLI::Validator input_file() {
   return CLI::Validator(
-      [](std::string& text) -> std::string { return text == "-" ? std::string() : CLI::ExistingFile(text); }, "FILE");
+      [](std::string& text) -> std::string {
+        std::string what = detail::input_file_problem(text);
+        if (!what.empty()) detail::input_file_missing() = true;
+        return what;
+      },
+      "FILE");
 }
 
 /// Text that must say something: an empty or blank value is an error, not "use the default".

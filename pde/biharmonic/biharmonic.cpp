@@ -31,7 +31,7 @@ std::string check_smoothness(const basis::Geometry& geometry) {
   for (Index e = 0; e < space.num_elements(); ++e) {
     const std::optional<int> degree = space.polynomial_degree(e);
     if (degree && *degree < 2) {
-      throw InputError("biharmonic: element " + std::to_string(e + 1) + " has degree " + std::to_string(*degree) +
+      throw InputError("biharmonic: element " + std::to_string(e) + " has degree " + std::to_string(*degree) +
                        ": its functions are not in H² (Δ²u = f needs a C1 space of degree >= 2)");
     }
   }

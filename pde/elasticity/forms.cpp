@@ -1,6 +1,7 @@
 #include "pde/elasticity/forms.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "core/error.hpp"
@@ -8,12 +9,21 @@
 namespace iga::pde {
 
 Lame lame(double young, double poisson, PlaneModel model) {
+  const auto shortest = [](double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+  };
   if (!(young > 0.0) || !std::isfinite(young)) {
-    throw InputError("elasticity: Young's modulus E must be a finite number > 0, got " + std::to_string(young));
+    throw InputError("elasticity: Young's modulus E must be a finite number > 0, got " + shortest(young));
   }
-  if (!(poisson > -1.0 && poisson < 0.5)) {
-    throw InputError("elasticity: Poisson's ratio must lie in (-1, 0.5) (0.5 is incompressible: the displacement "
-                     "form locks), got " + std::to_string(poisson));
+  // Plane stress: ν = 1/2 is allowed (λ* = Eν/(1 − ν²) stays finite); plane strain's λ = Eν/((1 + ν)(1 − 2ν)) is not.
+  if (model == PlaneModel::kStress && !(poisson > -1.0 && poisson <= 0.5)) {
+    throw InputError("elasticity: Poisson's ratio must lie in (-1, 0.5] in plane stress, got " + shortest(poisson));
+  }
+  if (model == PlaneModel::kStrain && !(poisson > -1.0 && poisson < 0.5)) {
+    throw InputError("elasticity: Poisson's ratio must lie in (-1, 0.5) in plane strain (0.5 is incompressible: the "
+                     "displacement form locks), got " + shortest(poisson));
   }
   Lame l;
   l.mu = young / (2 * (1 + poisson));

@@ -281,6 +281,12 @@ TEST(Elasticity, RefusesBadMaterialAndRigidModes) {
   EXPECT_NE(message(bad).find("Poisson's ratio"), std::string::npos);
   bad.poisson = -1.0;
   EXPECT_NE(message(bad).find("Poisson's ratio"), std::string::npos);
+  // Plane stress takes ν = 1/2: λ* = Eν/(1 − ν²) = 2E/3, μ = E/3; plane strain does not.
+  const pde::Lame half = pde::lame(3.0, 0.5, pde::PlaneModel::kStress);
+  EXPECT_NEAR(half.lambda, 2.0, 1e-15);
+  EXPECT_NEAR(half.mu, 1.0, 1e-15);
+  EXPECT_THROW(pde::lame(3.0, 0.5, pde::PlaneModel::kStrain), InputError);
+  EXPECT_THROW(pde::lame(3.0, 0.5000001, pde::PlaneModel::kStress), InputError);
   bad = d;
   bad.displacement.clear();
   EXPECT_NE(message(bad).find("no displacement condition"), std::string::npos);

@@ -2,7 +2,8 @@
 """The conventions every iga-* program keeps (README, "Conventions of every program"), checked from one table.
 
 For each program: --help and --version (exit 0, the version of CMakeLists.txt and the git revision on stdout),
-an unknown option (exit 2, one line "PROGRAM: error: ..." on stderr), bad input (exit 1, one line), a quick
+an unknown option (exit 2, one line "PROGRAM: error: ..." on stderr), bad input (exit 1, one line; a --config or
+--mesh file that is not there is bad input too), a quick
 successful run that writes nothing but what it is asked for ("none" writes nothing; stdout stays empty unless
 '-' asks for it), --quiet (stderr empty on success); for programs with a JSON report: '--json -' puts exactly
 the report on stdout with program, version, git_revision, schema_version and settings; and --export-config
@@ -78,6 +79,11 @@ class Checker:
                     rc == 0 and re.fullmatch(pattern, out) is not None and err == "", repr(out) + " " + repr(err))
         self.one_error_line(program, "an unknown option", self.run(program, "--no-such-option", work), 2)
         self.one_error_line(program, "bad input", self.run(program, bad_args, work), 1)
+        missing = os.path.join(tmp, "no_such_file.toml")
+        self.one_error_line(program, "a --config file that is not there (bad input)", self.run(program, f"--config {missing}", work), 1)
+        if "--mesh" in bad_args:
+            self.one_error_line(program, "a --mesh file that is not there (bad input)",
+                                self.run(program, bad_args.replace(fill["bad"], os.path.join(tmp, "no_such.obj")), work), 1)
 
         rc, out, err = self.run(program, ok_args, work)
         self.expect(program, f"a quick run ({ok_args}): exit 0", rc == 0, err)
