@@ -246,6 +246,7 @@ int run(const Options& o) {
     if (!o.quiet) std::cerr << "iga-bem: " << s << std::endl;
   };
   if (o.threads > 0) fem::set_num_threads(o.threads);
+  for (const std::string* path : {&o.json, &o.vtu, &o.boundary_vtu}) io::check_writable(*path);  // before the work
   io::Progress progress("iga-bem", o.quiet);
   const basis::Backend& backend = basis::backend(o.basis);
   basis::check_options(backend, o.given);

@@ -295,6 +295,12 @@ nlohmann::json solve_run(const Options& o) {
   const auto t_start = std::chrono::steady_clock::now();
   const Log log = make_log(o);
   if (o.threads > 0) fem::set_num_threads(o.threads);
+  // Every output path before the work (a study checks its own files): refused now, not after the solve.
+  if (fem::rank() == 0) {
+    io::check_writable(o.json);
+    io::check_writable(o.vtu);
+    io::check_writable(o.net_vtu);
+  }
   io::Progress progress("iga-poisson", o.quiet);
   const Setup s = make_setup(o);
   check_predicted_size(o, s);
@@ -374,6 +380,8 @@ int study(const Options& o) {
     throw iga::InputError("--study needs an exact solution for its error norms: give --exact with --source (or --problem)");
   }
   so.output = o.study_output;
+  if (o.json_given) iga::io::check_writable(o.json);  // the study's files before its levels run
+  if (iga::io::writes(so.output)) iga::io::check_writable(so.output + ".csv");
   so.plots = o.plots;
   so.vtu = o.vtu_given ? o.vtu : std::string();
   so.json = o.json_given ? o.json : std::string();

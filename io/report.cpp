@@ -1,12 +1,43 @@
 #include "io/report.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <iostream>
 
 #include "core/error.hpp"
 
 namespace iga::io {
+
+void check_writable(const std::string& path) {
+  if (!writes(path) || path == "-") return;
+  namespace fs = std::filesystem;
+  const auto fail = [&] { throw InputError(path, 0, "cannot write file"); };
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::is_directory(status)) fail();
+  if (fs::is_regular_file(status)) {
+    std::ofstream out(path, std::ios::out | std::ios::app | std::ios::binary);
+    if (!out) fail();
+    return;
+  }
+  if (fs::exists(status)) {
+    // A device: /dev/full (character device 1, 7 on Linux) accepts the open and refuses every byte; the others
+    // (/dev/null, a terminal) are not written to here.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISCHR(st.st_mode) && st.st_rdev == makedev(1, 7)) fail();
+    std::ofstream out(path, std::ios::out | std::ios::app | std::ios::binary);
+    if (!out) fail();
+    return;
+  }
+  {
+    std::ofstream out(path, std::ios::out | std::ios::binary);
+    if (!out) fail();
+  }
+  fs::remove(path, ec);
+}
 
 void write_text(const std::string& path, const std::string& text) {
   if (path == "-") {
