@@ -192,6 +192,7 @@ int main(int argc, char** argv) {
   const nlohmann::json info = iga::io::run_info(app, common.program);
   return iga::io::run_program("iga-quadrature", [&] {
     using namespace iga;
+    io::check_writable(json);  // before the work
     if (quantity == "mass" || quantity == "stiffness") {
       if (app.count("--basis")) throw InputError("--basis is for --quantity area or volume (the matrices are of Catmull–Clark elements)");
       return run_matrices(mesh, valence, quantity, method, json, info, common.quiet);

@@ -95,6 +95,7 @@ int make_three_valent(const Options& o) {
 }
 
 int run(const Options& o) {
+  for (const std::string* path : {&o.json, &o.vtu, &o.bv, &o.obj}) iga::io::check_writable(*path);  // before the work
   if (!o.three_valent.empty()) return make_three_valent(o);
   auto log = [&](const std::string& s) {
     if (!o.quiet) std::cerr << "iga-geometry: " << s << std::endl;
