@@ -88,6 +88,11 @@ class PoissonPde final : public Problem {
     neumann_ = std::move(split.neumann);
     if (!neumann_.empty() && !p_.neumann) throw InputError("Neumann boundary edges are selected but no Neumann data given");
     singular_ = dirichlet_.empty() && p_.reaction == 0.0;
+    if (p_.mean_zero && !singular_) {
+      throw InputError(std::string("the mean-zero solution was asked for, but ") +
+                       (dirichlet_.empty() ? "the reaction term c > 0" : "the Dirichlet boundary") +
+                       " already makes the solution unique (the mean-zero constraint would change it): leave it out");
+    }
     if (singular_ && !p_.mean_zero) {
       throw InputError(std::string(no_boundary ? "closed surface" : "no Dirichlet boundary") +
                        " and no reaction term: the solution is determined only up to a constant; keep a boundary "

@@ -144,11 +144,12 @@ std::vector<int> parse_boundary_parts(const std::string& list, const std::vector
     }
     parts.push_back(found);
   }
-  std::vector<int> once;
-  for (int p : parts) {
-    if (std::find(once.begin(), once.end(), p) == once.end()) once.push_back(p);
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (std::find(parts.begin(), parts.begin() + static_cast<std::ptrdiff_t>(i), parts[i]) != parts.begin() + static_cast<std::ptrdiff_t>(i)) {
+      throw InputError(what + ": boundary part '" + names[static_cast<std::size_t>(parts[i])] + "' is named twice (\"" + list + "\")");
+    }
   }
-  return once;
+  return parts;
 }
 
 Eigen::VectorXd summed_squares(const LinearSystem& system,

@@ -59,8 +59,8 @@ class Problem {
 };
 
 /// Boundary parts named in a comma-separated list, by name (Space::boundary_part_names(): "v0", "b0.1", ...) or
-/// 0-based index, or "all"; in the order given, each once. InputError "<what>: no boundary part 'x' (parts: ...)"
-/// naming the option. An empty list gives none.
+/// 0-based index, or "all"; in the order given. InputError naming the option for a part that does not exist ("<what>:
+/// no boundary part 'x' (parts: ...)") and for one named twice (by name, index or "all"). An empty list gives none.
 std::vector<int> parse_boundary_parts(const std::string& list, const std::vector<std::string>& names,
                                       const std::string& what);
 

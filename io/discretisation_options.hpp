@@ -27,7 +27,8 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
   app.add_option("--degree", o.degree, "polynomial degree per direction (bspline; cc is bicubic)")
       ->check(whole_number(1, 12))->capture_default_str();
   app.add_option("--refine-intervals", o.refine_intervals,
-                 "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)");
+                 "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)")
+      ->check(non_blank());
   app.add_option("--refine", o.refine,
                  "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for "
                  "polyhedral, where each step is a Catmull–Clark step of the net)")

@@ -193,8 +193,11 @@ int main(int argc, char** argv) {
   app.add_option("--bv", o.bv, "BezierView output (kind-5 tensor and kind-3 triangular patches)")->check(iga::io::non_blank());
   app.add_option("--json", o.json, "JSON report: element and patch counts (polyhedral: per configuration and valence, e.g. star5)")->check(iga::io::non_blank());
   app.add_option("--three-valent", o.three_valent, "make a three-valent net from the triangle mesh --mesh: dual (a vertex per triangle) or trisect (edges split in three, corners cut); written to --obj")
-      ->check(CLI::IsMember({"dual", "trisect"}));
-  app.add_option("--obj", o.obj, "with --three-valent: the OBJ file of the net")->check(iga::io::non_blank());
+      ->check(CLI::IsMember({"dual", "trisect"}))
+      // It writes a net, not a surface: the options of the surface would be ignored.
+      ->excludes(app.get_option("--basis"))->excludes(app.get_option("--vtu"))->excludes(app.get_option("--bv"));
+  app.add_option("--obj", o.obj, "with --three-valent: the OBJ file of the net")->check(iga::io::non_blank())
+      ->needs(app.get_option("--three-valent"));
   iga::io::CommonOptions common{"iga-geometry"};
   iga::io::add_common_options(app, common);
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
