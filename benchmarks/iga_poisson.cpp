@@ -253,6 +253,7 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["quadrature"] = quadrature;
   j["quadrature_points"] = r.quadrature_points;
   if (!r.error_quadrature.empty()) j["error_quadrature"] = r.error_quadrature;
+  if (!r.error_derivatives.empty()) j["error_derivatives"] = r.error_derivatives;  // of the exact gradient in H1
   iga::io::report_solve(j, r, solver);
   j["dirichlet_edges"] = r.dirichlet_edges;
   j["neumann_edges"] = r.neumann_edges;

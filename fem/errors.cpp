@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "core/error.hpp"
 
@@ -24,7 +26,17 @@ struct Fields {
   Eigen::VectorXd uh, ue;
   Eigen::Matrix3Xd gh, ge;
   Eigen::Matrix<double, 6, Eigen::Dynamic> hh, he;  // rows xx, xy, yy (planar) as Function::hessians
+  // Finite-difference derivatives only: those with the step doubled, for the estimate of their error.
+  Eigen::Matrix3Xd ge2;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> he2;
 };
+
+void project_tangent(const ElementContext& ctx, Eigen::Matrix3Xd& g) {
+  for (Index k = 0; k < g.cols(); ++k) {
+    const Eigen::Vector3d n = ctx.geo.normal.col(k);
+    g.col(k) -= g.col(k).dot(n) * n;
+  }
+}
 
 void evaluate_fields(const ElementContext& ctx, const Eigen::VectorXd& local, const Function& exact, int order,
                      Fields& f) {
@@ -35,17 +47,41 @@ void evaluate_fields(const ElementContext& ctx, const Eigen::VectorXd& local, co
     for (int c = 0; c < ctx.dim; ++c) f.gh.row(c) = local.transpose() * ctx.grad_component(c);
     // Planar: the in-plane gradient (the z-component is projected out below anyway; a finite-difference gradient
     // then evaluates a third fewer points).
-    exact.partial_gradients(ctx.geo.x, ctx.dim == 2 ? 2 : 3, f.ge);
-    for (Index k = 0; k < f.ge.cols(); ++k) {
-      const Eigen::Vector3d n = ctx.geo.normal.col(k);
-      f.ge.col(k) -= f.ge.col(k).dot(n) * n;
+    const int components = ctx.dim == 2 ? 2 : 3;
+    exact.partial_gradients(ctx.geo.x, components, f.ge);
+    project_tangent(ctx, f.ge);
+    if (!exact.exact_gradient()) {
+      exact.difference_gradients(ctx.geo.x, 2 * exact.fd_step(), components, f.ge2);
+      project_tangent(ctx, f.ge2);
     }
   }
   if (order >= 2) {
     f.hh.setZero(6, f.uh.size());
     for (int b = 0; b < 3; ++b) f.hh.row(b) = local.transpose() * ctx.hessian_block(b);
     exact.hessians(ctx.geo.x, f.he);
+    if (!exact.exact_hessian()) exact.difference_hessians(ctx.geo.x, 2 * exact.fd_step(), f.he2);
   }
+}
+
+// ∫ |D_h u − D_2h u|² in a norm's derivatives: the estimate of the finite differences' error (0 for exact ones).
+double derivative_error_square(Norm norm, const Function& exact, const Fields& f, const Eigen::VectorXd& w) {
+  switch (norm) {
+    case Norm::kL2: return 0.0;
+    case Norm::kH1:
+      if (exact.exact_gradient()) return 0.0;
+      return ((f.ge - f.ge2).colwise().squaredNorm().transpose().array() * w.array()).sum();
+    case Norm::kH2: {
+      if (exact.exact_hessian()) return 0.0;
+      const Eigen::ArrayXXd d = (f.he.topRows(3) - f.he2.topRows(3)).array();
+      return ((d.row(0).square() + 2 * d.row(1).square() + d.row(2).square()).transpose() * w.array()).sum();
+    }
+    case Norm::kLaplacian: {
+      if (exact.exact_hessian()) return 0.0;
+      const Eigen::ArrayXd d = ((f.he.row(0) + f.he.row(2)) - (f.he2.row(0) + f.he2.row(2))).transpose().array();
+      return (d.square() * w.array()).sum();
+    }
+  }
+  return 0.0;
 }
 
 // ∫ of the pointwise square of a norm's integrand: of exact − discrete (error), or of the exact solution alone.
@@ -79,7 +115,7 @@ Eigen::VectorXd norm_squares(const Assembler& assembler, const Eigen::VectorXd& 
   }
   const basis::Space& space = assembler.geometry().space();
   const int k = static_cast<int>(norms.size());
-  return assembler.integrate(2 * k, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+  return assembler.integrate(3 * k, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
     const auto dofs = space.dofs(ctx.element);
     thread_local Eigen::VectorXd local;
     thread_local Fields f;
@@ -89,25 +125,47 @@ Eigen::VectorXd norm_squares(const Assembler& assembler, const Eigen::VectorXd& 
     for (int i = 0; i < k; ++i) {
       out(2 * i) = square(norms[static_cast<std::size_t>(i)], f, ctx.weight, true);
       out(2 * i + 1) = square(norms[static_cast<std::size_t>(i)], f, ctx.weight, false);
+      out(2 * k + i) = derivative_error_square(norms[static_cast<std::size_t>(i)], exact, f, ctx.weight);
     }
   }, std::max(needed, 1), only);
 }
 
-std::vector<NormError> norm_errors(const std::vector<std::string>& names, const Eigen::VectorXd& squares) {
+std::string derivatives_in(Norm norm, const Function& exact) {
+  return norm == Norm::kL2 ? "values" : exact.derivative_method(order(norm));
+}
+
+std::vector<NormError> norm_errors(const std::vector<std::string>& names, const Eigen::VectorXd& squares,
+                                   const std::vector<std::string>& derivatives) {
   std::vector<NormError> out;
-  if (squares.size() != 2 * static_cast<Index>(names.size())) {
-    throw Error("norm_errors: " + std::to_string(squares.size()) + " squares for " + std::to_string(names.size()) +
-                " norms");
+  const Index n = static_cast<Index>(names.size());
+  if ((squares.size() != 2 * n && squares.size() != 3 * n) || (!derivatives.empty() && derivatives.size() != names.size())) {
+    throw Error("norm_errors: " + std::to_string(squares.size()) + " squares and " +
+                std::to_string(derivatives.size()) + " derivative methods for " + std::to_string(n) + " norms");
   }
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const double e = std::sqrt(squares(static_cast<Index>(2 * i)));
-    const double x = std::sqrt(squares(static_cast<Index>(2 * i + 1)));
+  for (Index i = 0; i < n; ++i) {
+    const std::string& name = names[static_cast<std::size_t>(i)];
+    const double e = std::sqrt(squares(2 * i));
+    const double x = std::sqrt(squares(2 * i + 1));
     if (!std::isfinite(e) || !std::isfinite(x)) {
-      throw NumericalError("the " + names[i] + " error against the exact solution is not finite (error " +
+      throw NumericalError("the " + name + " error against the exact solution is not finite (error " +
                            std::to_string(e) + ", exact " + std::to_string(x) +
                            "): does the exact solution overflow, or did the solve diverge?");
     }
-    out.push_back({names[i], e, x});
+    NormError figure{name, e, x, derivatives.empty() ? std::string() : derivatives[static_cast<std::size_t>(i)], 0.0};
+    if (squares.size() == 3 * n) {
+      figure.derivative_error = std::sqrt(squares(2 * n + i));
+      if (!(figure.derivative_error <= kDerivativeErrorShare * e)) {
+        std::ostringstream msg;
+        msg << std::setprecision(3) << "the " << name << " error (" << e
+            << ") is not reported: it needs the exact solution's derivatives, here finite differences whose error is "
+               "estimated at "
+            << figure.derivative_error << ", more than " << 100 * kDerivativeErrorShare
+            << " % of it; give the exact solution with derivatives in closed form"
+            << (figure.derivatives.empty() ? "" : " (" + figure.derivatives + ")");
+        throw NumericalError(msg.str());
+      }
+    }
+    out.push_back(std::move(figure));
   }
   return out;
 }

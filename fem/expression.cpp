@@ -7,35 +7,65 @@
 #include <iomanip>
 #include <sstream>
 #include <numbers>
+#include <optional>
+#include <regex>
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "fem/symbolic.hpp"
 
 namespace iga::fem {
 
 struct Expression::Evaluator {
-  mu::Parser parser;
   double x = 0, y = 0, z = 0, nx = 0, ny = 0, nz = 0;
+  mu::Parser parser;
+  std::vector<mu::Parser> derivatives;  // made on first use: ∂x, ∂y, ∂z, xx, xy, yy, xz, yz, zz
 
-  Evaluator(const std::string& text, bool allow_normal) {
-    parser.DefineConst("pi", std::numbers::pi);
-    parser.DefineConst("e", std::numbers::e);
-    parser.DefineFun("atan2", static_cast<double (*)(double, double)>(std::atan2));
-    parser.DefineFun("pow", static_cast<double (*)(double, double)>(std::pow));
-    parser.DefineVar("x", &x);
-    parser.DefineVar("y", &y);
-    parser.DefineVar("z", &z);
+  Evaluator(const std::string& text, bool allow_normal) { define(parser, text, allow_normal); }
+
+  void define(mu::Parser& p, const std::string& text, bool allow_normal) {
+    p.DefineConst("pi", std::numbers::pi);
+    p.DefineConst("e", std::numbers::e);
+    p.DefineFun("atan2", static_cast<double (*)(double, double)>(std::atan2));
+    p.DefineFun("pow", static_cast<double (*)(double, double)>(std::pow));
+    p.DefineVar("x", &x);
+    p.DefineVar("y", &y);
+    p.DefineVar("z", &z);
     if (allow_normal) {
-      parser.DefineVar("nx", &nx);
-      parser.DefineVar("ny", &ny);
-      parser.DefineVar("nz", &nz);
+      p.DefineVar("nx", &nx);
+      p.DefineVar("ny", &ny);
+      p.DefineVar("nz", &nz);
     }
-    parser.SetExpr(text);
+    p.SetExpr(text);
+  }
+  mu::Parser& derivative(const std::vector<std::string>& texts, std::size_t i) {
+    if (derivatives.empty()) {
+      derivatives.resize(texts.size());
+      for (std::size_t k = 0; k < texts.size(); ++k) define(derivatives[k], texts[k], false);
+    }
+    return derivatives[i];
+  }
+  void at(const Eigen::Matrix3Xd& p, Eigen::Index k) {
+    x = p(0, k);
+    y = p(1, k);
+    z = p(2, k);
   }
 };
 
 namespace {
 std::atomic<std::uint64_t> next_id{1};
+
+// muparser's message in the user's terms: its positions count from 0 ("found at position 4." for the fifth
+// character); a user, and the control-character check above, count from 1.
+std::string parser_message(std::string msg) {
+  static const std::regex position("at position ([0-9]+)");
+  std::smatch m;
+  if (std::regex_search(msg, m, position)) {
+    msg = m.prefix().str() + "at position " + std::to_string(std::stoll(m[1].str()) + 1) + m.suffix().str();
+  }
+  while (!msg.empty() && (msg.back() == '.' || msg.back() == ' ')) msg.pop_back();
+  return msg;
+}
 
 std::string point_text(const Eigen::Matrix3Xd& x, Eigen::Index k) {
   std::ostringstream s;
@@ -44,10 +74,10 @@ std::string point_text(const Eigen::Matrix3Xd& x, Eigen::Index k) {
 }
 }  // namespace
 
-void Expression::check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& out) const {
+void Expression::check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& out, const char* of) const {
   for (Eigen::Index k = 0; k < out.size(); ++k) {
     if (std::isfinite(out(k))) continue;
-    throw InputError(what_ + ": " + quoted_ + " is " + (std::isnan(out(k)) ? "NaN" : "infinite") + " at " +
+    throw InputError(what_ + ": " + of + quoted_ + " is " + (std::isnan(out(k)) ? "NaN" : "infinite") + " at " +
                      point_text(x, k) + "; data must be finite wherever they are used");
   }
 }
@@ -90,8 +120,99 @@ Expression::Expression(std::string text, std::string what, bool allow_normal)
       throw InputError(what_ + ": " + quoted + ": ',' separates several expressions; give one");
     }
   } catch (const mu::Parser::exception_type& e) {
-    throw InputError(what_ + ": " + quoted + ": " + e.GetMsg());
+    throw InputError(what_ + ": " + quoted + ": " + parser_message(e.GetMsg()));
   }
+  if (!allow_normal_) differentiate();
+}
+
+namespace {
+// Where a reading of the text is compared with the text: scattered points of [-3, 3]³ (no zeros, no symmetry),
+// each used where both are finite.
+constexpr double kCheckPoints[][3] = {{0.3141, 0.5772, 0.1618}, {-0.7071, 0.2718, 0.4142}, {1.7321, -0.3679, 0.6931},
+                                      {0.0871, 0.9134, -0.2236}, {-1.2247, -0.8660, 1.1447}, {2.2361, 1.4142, -0.5878},
+                                      {0.6180, -2.0794, 0.3010}, {-0.1492, 0.0523, 2.7183}, {0.9511, 0.3090, 0.0175},
+                                      {-2.6458, 1.0986, -1.3863}, {0.4472, -0.1054, 0.8944}, {1.0472, 2.0944, 0.5236}};
+}  // namespace
+
+void Expression::differentiate() {
+  std::string why;
+  const std::optional<SymbolicDerivatives> d = fem::differentiate(text_, why);
+  if (!d) {
+    not_symbolic_ = why;
+    return;
+  }
+  std::vector<std::string> texts(d->gradient.begin(), d->gradient.end());
+  texts.insert(texts.end(), d->hessian.begin(), d->hessian.end());
+  for (const std::string& t : texts) {
+    if (t.size() > static_cast<std::size_t>(mu::MaxLenExpression)) {
+      not_symbolic_ = "a derivative is longer than muparser's " + std::to_string(mu::MaxLenExpression) +
+                      " characters";
+      return;
+    }
+  }
+  // The reading must give the text's own values: a check of the reader against muparser on this very text.
+  try {
+    Evaluator mine(text_, false), read(d->reading, false);
+    int compared = 0;
+    for (const auto& p : kCheckPoints) {
+      mine.x = read.x = p[0];
+      mine.y = read.y = p[1];
+      mine.z = read.z = p[2];
+      const double a = mine.parser.Eval(), b = read.parser.Eval();
+      if (!std::isfinite(a) || !std::isfinite(b)) continue;
+      if (std::abs(a - b) > 1e-9 * std::max(std::abs(a), std::abs(b))) {
+        std::ostringstream msg;
+        msg << std::setprecision(17) << "its symbolic reading gives " << b << " where it is " << a << " at ("
+            << p[0] << ", " << p[1] << ", " << p[2] << ")";
+        not_symbolic_ = msg.str();
+        return;
+      }
+      ++compared;
+    }
+    if (compared == 0) {
+      not_symbolic_ = "its symbolic reading could not be checked (the expression is not finite at the check points)";
+      return;
+    }
+    for (const std::string& t : texts) Evaluator check(t, false);  // muparser reads each derivative
+  } catch (const mu::Parser::exception_type& e) {
+    not_symbolic_ = "muparser: " + e.GetMsg();
+    return;
+  }
+  derivatives_ = std::move(texts);
+  symbolic_ = true;
+}
+
+std::string Expression::derivative_method(int order) const {
+  if (symbolic_) return "symbolic (GiNaC)";
+  return Function::derivative_method(order) + " (not symbolic: " + not_symbolic_ + ")";
+}
+
+void Expression::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const {
+  if (!symbolic_) {
+    Function::gradients(x, out);
+    return;
+  }
+  Evaluator& ev = evaluator();
+  out.resize(3, x.cols());
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    ev.at(x, k);
+    for (std::size_t c = 0; c < 3; ++c) out(static_cast<Eigen::Index>(c), k) = ev.derivative(derivatives_, c).Eval();
+  }
+  for (int c = 0; c < 3; ++c) check_finite(x, out.row(c).transpose(), "the gradient of ");
+}
+
+void Expression::hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const {
+  if (!symbolic_) {
+    Function::hessians(x, out);
+    return;
+  }
+  Evaluator& ev = evaluator();
+  out.resize(6, x.cols());
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    ev.at(x, k);
+    for (std::size_t r = 0; r < 6; ++r) out(static_cast<Eigen::Index>(r), k) = ev.derivative(derivatives_, 3 + r).Eval();
+  }
+  for (int r = 0; r < 6; ++r) check_finite(x, out.row(r).transpose(), "the Hessian of ");
 }
 
 Expression::~Expression() = default;

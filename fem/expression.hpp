@@ -2,6 +2,7 @@
 // Functions given as text, parsed with muparser: "sin(pi*x)*sin(pi*y)".
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "fem/function.hpp"
 
@@ -14,6 +15,10 @@ namespace iga::fem {
 /// error or an unknown variable, where `what` names the option (e.g. "--source").
 /// Evaluation is thread-safe (one parser per thread). A value that is not finite (1/0, sqrt(-1), log(0), an
 /// overflow) throws InputError naming the option, the expression and the point: data are never NaN.
+/// Derivatives (gradients(), hessians(); not for boundary data with nx, ny, nz) are exact: differentiated
+/// symbolically once (fem/symbolic.hpp, GiNaC) and evaluated as muparser texts. When that is not possible (the
+/// reading, written back, does not give the text's values at fixed points) they are Function's finite differences,
+/// derivative_method() says why, and the error norms estimate that difference's error (fem/errors.hpp).
 class Expression final : public Function, public BoundaryFunction {
  public:
   Expression(std::string text, std::string what, bool allow_normal = false);
@@ -21,13 +26,25 @@ class Expression final : public Function, public BoundaryFunction {
   const std::string& text() const { return text_; }
   void values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const override;
   void values(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& n, Eigen::VectorXd& out) const override;
+  void gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const override;
+  bool exact_gradient() const override { return symbolic_; }
+  void hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const override;
+  bool exact_hessian() const override { return symbolic_; }
+  /// "symbolic (GiNaC)", or "finite differences (<why not symbolic>)".
+  std::string derivative_method(int order) const override;
+  /// The derivatives' texts (empty when not symbolic): ∂x, ∂y, ∂z, then xx, xy, yy, xz, yz, zz.
+  const std::vector<std::string>& derivative_texts() const { return derivatives_; }
 
  private:
   struct Evaluator;
   Evaluator& evaluator() const;
-  void check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& out) const;
+  void check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& out, const char* of = "") const;
+  void differentiate();
   std::string text_, what_, quoted_;
   bool allow_normal_;
+  bool symbolic_ = false;
+  std::vector<std::string> derivatives_;  ///< 3 gradient and 6 Hessian texts when symbolic_
+  std::string not_symbolic_;              ///< why not, otherwise
   std::uint64_t id_;
 };
 

@@ -39,43 +39,52 @@ void Function::partial_gradients(const Eigen::Matrix3Xd& x, int components, Eige
     out.bottomRows(3 - components).setZero();
     return;
   }
-  try {
-    central_difference(*this, x, fd_step_, out, components);
-  } catch (const InputError&) {
-    gradients(x, out);  // near the edge of the function's domain: point by point with shrinking steps
-    out.bottomRows(3 - components).setZero();
-  }
+  difference_gradients(x, fd_step_, components, out);
 }
 
 void Function::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const {
+  difference_gradients(x, fd_step_, 3, out);
+}
+
+std::string Function::derivative_method(int order) const {
+  if (order <= 1) return exact_gradient() ? "closed form" : "finite differences";
+  if (exact_hessian()) return "closed form";
+  return exact_gradient() ? "finite differences of the closed-form gradient" : "finite differences";
+}
+
+void Function::difference_gradients(const Eigen::Matrix3Xd& x, double h, int components, Eigen::Matrix3Xd& out) const {
   try {
-    central_difference(*this, x, fd_step_, out);
+    central_difference(*this, x, h, out, components);
     return;
   } catch (const InputError&) {
     // A shifted point left the function's domain (sqrt(x) near x = 0, where the domain ends): point by point,
     // halve the step until the stencil stays where the function is defined; a point where it never does (or
     // the function itself is not finite) gets the error of that point.
   }
-  out.resize(3, x.cols());
+  out.setZero(3, x.cols());
   Eigen::Matrix3Xd one(3, 1), g;
   for (Eigen::Index k = 0; k < x.cols(); ++k) {
     one.col(0) = x.col(k);
-    for (double h = fd_step_;; h *= 0.5) {
+    for (double step = h;; step *= 0.5) {
       try {
-        central_difference(*this, one, h, g);
+        central_difference(*this, one, step, g, components);
         out.col(k) = g.col(0);
         break;
       } catch (const InputError&) {
-        if (h < fd_step_ * 1e-6) throw;
+        if (step < h * 1e-6) throw;
       }
     }
   }
 }
 
 void Function::hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const {
+  difference_hessians(x, fd_step_, out);
+}
+
+void Function::difference_hessians(const Eigen::Matrix3Xd& x, double h,
+                                   Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const {
   // Column j of the Hessian: (−g(x + 2h e_j) + 8 g(x + h e_j) − 8 g(x − h e_j) + g(x − 2h e_j)) / 12h.
   const Eigen::Index q = x.cols();
-  const double h = fd_step_;
   Eigen::Matrix3Xd shifted(3, 12 * q), g;
   const double offsets[4] = {2 * h, h, -h, -2 * h};
   for (Eigen::Index k = 0; k < q; ++k) {
@@ -199,6 +208,7 @@ std::shared_ptr<Function> shifted_function(std::shared_ptr<const Function> u, do
       u_->hessians(x, out);
     }
     bool exact_hessian() const override { return u_->exact_hessian(); }
+    std::string derivative_method(int order) const override { return u_->derivative_method(order); }
 
    private:
     std::shared_ptr<const Function> u_;

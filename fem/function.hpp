@@ -5,6 +5,7 @@
 #include "basis/geometry.hpp"
 #include <functional>
 #include <memory>
+#include <string>
 
 namespace iga::fem {
 
@@ -29,6 +30,15 @@ class Function {
   virtual void hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const;
   /// True when hessians() is exact (closed form).
   virtual bool exact_hessian() const { return false; }
+  /// How the derivatives of the given order (1: gradients(), 2: hessians()) are computed, for reports: "closed form",
+  /// "finite differences", or what an override says ("symbolic (GiNaC)").
+  virtual std::string derivative_method(int order) const;
+  /// The gradients() of the finite difference with step h instead of fd_step() (the first `components` entries, the
+  /// rest 0), for estimates of that difference's own error; point by point with shrinking steps where the stencil
+  /// leaves the function's domain, as gradients() does.
+  void difference_gradients(const Eigen::Matrix3Xd& x, double h, int components, Eigen::Matrix3Xd& out) const;
+  /// The default hessians() with step h: the difference of gradients() (exact or not).
+  void difference_hessians(const Eigen::Matrix3Xd& x, double h, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const;
   /// Step of the default finite-difference gradient (physical units); 1e-3 suits domains of size ~1, and
   /// finite_difference_step(geometry) gives the step for any other (the same relative to the domain's size).
   double fd_step() const { return fd_step_; }

@@ -168,6 +168,10 @@ class PoissonPde final : public Problem {
     if (!p_.exact) return {};
     return {"L2", "H1"};
   }
+  std::vector<std::string> error_derivatives() const override {
+    if (!p_.exact) return {};
+    return {derivatives_in(Norm::kL2, *p_.exact), derivatives_in(Norm::kH1, *p_.exact)};
+  }
   Eigen::VectorXd error_squares(const Assembler& by, const Eigen::VectorXd& u,
                                 const LinearSystem& system) const override {
     std::shared_ptr<const Function> exact = p_.exact;
@@ -287,6 +291,7 @@ void PoissonSolver::errors() {
   if (!p.errors.empty()) {
     r_.error_quadrature = p.error_quadrature;
     r_.errors = ErrorNorms{p.error("L2").error, p.error("H1").error, p.error("L2").exact, p.error("H1").exact};
+    r_.error_derivatives = p.error("H1").derivatives;
   }
   r_.error_seconds = p.error_seconds;
   done_ = 4;

@@ -51,6 +51,7 @@ struct PoissonResult {
   double solve_seconds = 0.0;
   double error_seconds = 0.0;       ///< error norms (with an exact solution)
   std::string error_quadrature;     ///< the rules of the error norms (RuleProvider::error_rules(), else the assembly's)
+  std::string error_derivatives;    ///< how the exact solution's gradient in the H1 error was computed
   std::string solver;
   double residual_norm = 0.0;       ///< relative residual of the reduced system
   Index solver_iterations = 0;

@@ -114,7 +114,7 @@ void ProblemSolver::errors() {
     error_assembler.emplace(geometry_, finer ? *finer : rules_);
     const Assembler& by = *error_assembler;
     r_.error_quadrature = finer ? finer->name() : rules_.name();
-    r_.errors = norm_errors(names, problem_->error_squares(by, r_.u, *sys_->system));
+    r_.errors = norm_errors(names, problem_->error_squares(by, r_.u, *sys_->system), problem_->error_derivatives());
   }
   r_.error_seconds = seconds_since(t0);
   done_ = 4;

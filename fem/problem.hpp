@@ -51,11 +51,16 @@ class Problem {
   virtual void finish(const Assembler& /*assembler*/, Eigen::VectorXd& /*u*/) const {}
   /// The error figures, in report order; none without an exact solution.
   virtual std::vector<std::string> error_names() const = 0;
-  /// Their squares over the whole domain, error² and exact² per name (norm_squares' layout), by the assembler `by`
+  /// Their squares over the whole domain, error² and exact² per name and (optionally) the squared estimates of
+  /// finite-difference derivatives' errors (norm_squares' layout), by the assembler `by`
   /// (the error rules; scalar, on the same geometry): each process integrates system.own_elements() and the parts
   /// are summed over the processes (summed_squares() does both).
   virtual Eigen::VectorXd error_squares(const Assembler& by, const Eigen::VectorXd& u,
                                         const LinearSystem& system) const = 0;
+  /// How each figure uses the exact solution's derivatives (fem::derivatives_in: "values", "closed form",
+  /// "symbolic (GiNaC)", "finite differences ..."), in the order of error_names(): what a report says of how its
+  /// figures were computed. Empty: not said.
+  virtual std::vector<std::string> error_derivatives() const { return {}; }
 };
 
 /// Boundary parts named in a comma-separated list, by name (Space::boundary_part_names(): "v0", "b0.1", ...) or

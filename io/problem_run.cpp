@@ -36,6 +36,10 @@ void report_problem_result(nlohmann::json& j, const fem::ProblemResult& r, const
   for (const fem::NormError& e : r.errors) {
     j["errors"][e.name] = {{"error", e.error}, {"exact", e.exact},
                            {"relative", e.exact > 0 ? nlohmann::json(e.error / e.exact) : nlohmann::json(nullptr)}};
+    // How it was computed: the rule is error_quadrature; the exact solution's derivatives, and the estimated error
+    // of finite-difference ones.
+    if (!e.derivatives.empty()) j["errors"][e.name]["derivatives"] = e.derivatives;
+    if (e.derivative_error > 0.0) j["errors"][e.name]["derivative_error"] = e.derivative_error;
     j["error_order"].push_back(e.name);
   }
 }

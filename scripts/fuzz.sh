@@ -14,7 +14,7 @@ jobs="${IGA_JOBS:-$(nproc)}"
 seconds="${1:-600}"
 [[ "$seconds" =~ ^[0-9]+$ ]] || { echo "usage: scripts/fuzz.sh [SECONDS_PER_TARGET]" >&2; exit 2; }
 
-packages=(clang libclang-rt-14-dev cmake libeigen3-dev nlohmann-json3-dev libmuparser-dev)
+packages=(clang libclang-rt-14-dev cmake libeigen3-dev nlohmann-json3-dev libmuparser-dev libginac-dev pkg-config)
 # shellcheck source=scripts/packages.sh
 source "$root/scripts/packages.sh"
 install_packages fuzz "${packages[@]}"

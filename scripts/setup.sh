@@ -13,6 +13,8 @@ packages=(
   build-essential cmake ninja-build ccache
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnlopt-cxx-dev libosd-dev libvtk9-dev
   libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev
+  # GiNaC: the exact (symbolic) derivatives of expressions (fem/symbolic.cpp).
+  libginac-dev
   python3-matplotlib libbenchmark-dev
   # The distributed solver (--solver petsc): PETSc 3.18 (with hypre and MUMPS), OpenMPI (mpirun), METIS, and
   # pkg-config, through which CMake finds PETSc.

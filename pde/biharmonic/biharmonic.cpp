@@ -135,6 +135,11 @@ class Biharmonic final : public fem::Problem {
     if (!d_.exact) return {};
     return {"L2", "H1", "H2", "energy"};
   }
+  std::vector<std::string> error_derivatives() const override {
+    if (!d_.exact) return {};
+    return {fem::derivatives_in(fem::Norm::kL2, *d_.exact), fem::derivatives_in(fem::Norm::kH1, *d_.exact),
+            fem::derivatives_in(fem::Norm::kH2, *d_.exact), fem::derivatives_in(fem::Norm::kLaplacian, *d_.exact)};
+  }
   Eigen::VectorXd error_squares(const fem::Assembler& by, const Eigen::VectorXd& u,
                                 const fem::LinearSystem& system) const override {
     const fem::Norm norms[4] = {fem::Norm::kL2, fem::Norm::kH1, fem::Norm::kH2, fem::Norm::kLaplacian};

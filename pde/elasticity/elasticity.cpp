@@ -129,6 +129,12 @@ class Elasticity final : public fem::Problem {
     if (!d_.exact[0] || !d_.exact[1]) return {};
     return {"L2", "L2 x", "L2 y", "H1", "H1 x", "H1 y", "energy"};
   }
+  std::vector<std::string> error_derivatives() const override {
+    if (!d_.exact[0] || !d_.exact[1]) return {};
+    const std::string x = d_.exact[0]->derivative_method(1), y = d_.exact[1]->derivative_method(1);
+    const std::string both = x == y ? x : "x: " + x + "; y: " + y;
+    return {"values", "values", "values", both, x, y, both};
+  }
   Eigen::VectorXd error_squares(const fem::Assembler& by, const Eigen::VectorXd& u,
                                 const fem::LinearSystem& system) const override {
     return fem::summed_squares(system, [&](const std::vector<char>* only) { return squares(by, u, only); });
@@ -200,7 +206,8 @@ Eigen::VectorXd Elasticity::squares(const fem::Assembler& by, const Eigen::Vecto
                                     const std::vector<char>* only) const {
   const basis::Space& space = by.geometry().space();
   const Lame l = lame_;
-  return by.integrate(14, [&](const fem::ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+  // 7 figures: error² and exact² each (0..13), then the estimates² of finite-difference derivatives (14..20).
+  return by.integrate(21, [&](const fem::ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
     const auto dofs = space.dofs(ctx.element);
     const Index nloc = static_cast<Index>(dofs.size()), q = ctx.num_points();
     Eigen::MatrixXd local(nloc, 2);
@@ -233,6 +240,15 @@ Eigen::VectorXd Elasticity::squares(const fem::Assembler& by, const Eigen::Vecto
       out(1) += l2x;
       out(6) += h1e;
       out(7) += h1x;
+      const fem::Function& exact = *d_.exact[static_cast<std::size_t>(c)];
+      if (!exact.exact_gradient()) {  // "H1 x"/"H1 y", H1; energy ≤ (2λ + 2μ) |δ∇u|² pointwise
+        Eigen::Matrix3Xd g2;
+        exact.difference_gradients(ctx.geo.x, 2 * exact.fd_step(), 2, g2);
+        const double est = ((ge[c] - g2).colwise().squaredNorm().transpose().array() * w.array()).sum();
+        out(18 + c) += est;
+        out(17) += est;
+        out(20) += 2 * (l.lambda + l.mu) * est;
+      }
     }
     // Energy: λ (tr ε)² + 2μ ε:ε of the error and of the exact field.
     for (Index k = 0; k < q; ++k) {

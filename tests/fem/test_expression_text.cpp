@@ -28,3 +28,10 @@ TEST(ExpressionText, ControlCharactersAreRefusedInOneLine) {
   EXPECT_EQ(error_of("x\x7F"), "--source: control character (byte 0x7F) at position 2 of the expression");
   EXPECT_EQ(error_of("x +\ty"), "");  // a tab is a blank
 }
+
+// muparser counts positions from 0 ("found at position 4." for the fifth character); the message counts from 1, as
+// the control-character check does, and ends without muparser's full stop (issue 32).
+TEST(ExpressionText, PositionsCountFromOne) {
+  EXPECT_EQ(error_of("sin(t)"), "--source: 'sin(t)': Unexpected token \"t\" found at position 5");
+  EXPECT_EQ(error_of("x+*y"), "--source: 'x+*y': Unexpected operator \"*\" found at position 3");
+}
