@@ -161,9 +161,12 @@ void PolyhedralSpace::build_sides() {
   std::uniform_real_distribution<double> coord(-1.0, 1.0);
   Eigen::MatrixXd probe(num_dofs(), 3);
   for (Index d = 0; d < num_dofs(); ++d) probe.row(d) << coord(rng), coord(rng), coord(rng);
-  const double ts[5] = {0.0, 0.25, 0.5, 0.75, 1.0};
+  // Each side sampled at t = k/16, k = 0..16: sides that share a curve do so as wholes, halves or quarters (a coarse
+  // patch's side next to four patches of a refined configuration: issue 32 found such sides, each reported as two
+  // boundary slits inside square_evs.obj), and every such piece's samples land on samples of the longer side.
+  constexpr int kSamples = 17;
   const Index nsides = 4 * num_elements();
-  std::vector<std::array<Eigen::Vector3d, 5>> samples(static_cast<std::size_t>(nsides));
+  std::vector<std::array<Eigen::Vector3d, kSamples>> samples(static_cast<std::size_t>(nsides));
   double scale = 0.0;
   for (Index e = 0; e < num_elements(); ++e) {
     const Element& el = elements_[static_cast<std::size_t>(e)];
@@ -172,8 +175,8 @@ void PolyhedralSpace::build_sides() {
     const Eigen::MatrixXd bb = el.c * local;  // 16 × 3
     for (int side = 0; side < 4; ++side) {
       const auto rows = side_rows(side);
-      for (int k = 0; k < 5; ++k) {
-        const Cubic c(ts[k]);
+      for (int k = 0; k < kSamples; ++k) {
+        const Cubic c(k / 16.0);
         Eigen::Vector3d x = Eigen::Vector3d::Zero();
         for (int i = 0; i < 4; ++i) x += c.b[static_cast<std::size_t>(i)] * bb.row(rows[static_cast<std::size_t>(i)]).transpose();
         samples[static_cast<std::size_t>(4 * e + side)][static_cast<std::size_t>(k)] = x;
@@ -193,58 +196,61 @@ void PolyhedralSpace::build_sides() {
   };
   std::vector<std::pair<Key, Index>> grid[2];  // sorted by key
   for (int gi = 0; gi < 2; ++gi) {
-    grid[gi].reserve(static_cast<std::size_t>(5 * nsides));
+    grid[gi].reserve(static_cast<std::size_t>(kSamples * nsides));
     for (Index s = 0; s < nsides; ++s) {
-      for (int k = 0; k < 5; ++k) grid[gi].emplace_back(key(samples[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)], 0.5 * gi), s);
+      for (int k = 0; k < kSamples; ++k) grid[gi].emplace_back(key(samples[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)], 0.5 * gi), s);
     }
     std::sort(grid[gi].begin(), grid[gi].end());
   }
   auto same = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return (a - b).cwiseAbs().maxCoeff() <= tol; };
-  // How side s runs along side o: with s(t), t in [0, 1], equal to o(r0 + t (r1 − r0)), the range (r0, r1)
-  // on o (whole: (0, 1) or (1, 0); s one half of o: (0, ½), (½, 1) or reversed); `half_of_s` when o is one
-  // half of s instead (the piece is then listed from o); nothing when they do not meet along a curve.
+  // Whether side a runs along side b over b's range (r0, r1) (r0, r1 multiples of 1/4, either order): a(t) =
+  // b(r0 + t (r1 − r0)), checked at the samples of a that land on samples of b (all 17 for a whole, 9 for a half,
+  // 5 for a quarter).
+  auto along = [&](Index sa, Index sb, double r0, double r1) {
+    const auto& a = samples[static_cast<std::size_t>(sa)];
+    const auto& b = samples[static_cast<std::size_t>(sb)];
+    for (int k = 0; k < kSamples; ++k) {
+      const double r = 16.0 * (r0 + (k / 16.0) * (r1 - r0));  // b's sample index, when integral
+      const double ri = std::round(r);
+      if (std::abs(r - ri) > 1e-12) continue;
+      if (!same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(ri)])) return false;
+    }
+    return true;
+  };
+  // The ranges of a piece: whole, halves, quarters, each either way.
+  std::vector<std::array<double, 2>> ranges;
+  for (const int n : {1, 2, 4}) {
+    for (int j = 0; j < n; ++j) {
+      ranges.push_back({static_cast<double>(j) / n, static_cast<double>(j + 1) / n});
+      ranges.push_back({static_cast<double>(j + 1) / n, static_cast<double>(j) / n});
+    }
+  }
+  // How side s meets side o: s runs along o over o's range (r0, r1) (s the shorter or equal), or o is a piece of s
+  // (`piece_of_s`: the piece is listed from o), or not along a curve.
   struct Match {
-    bool found = false, half_of_s = false;
+    bool found = false, piece_of_s = false;
     double r0 = 0.0, r1 = 1.0;
   };
   auto match = [&](Index s, Index o) {
-    const auto& a = samples[static_cast<std::size_t>(s)];
-    const auto& b = samples[static_cast<std::size_t>(o)];
-    // a(ts[k]) against b(r0 + ts[k] (r1 − r0)) for the samples k that land on o's samples.
-    auto along = [&](double r0, double r1) {
-      for (int k = 0; k < 5; ++k) {
-        const double r = 4.0 * (r0 + ts[k] * (r1 - r0));  // o's sample index, when integral
-        const double ri = std::round(r);
-        if (std::abs(r - ri) > 1e-12) continue;
-        if (!same(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(ri)])) return false;
-      }
-      return true;
-    };
-    const double ranges[6][2] = {{0.0, 1.0}, {1.0, 0.0}, {0.0, 0.5}, {0.5, 1.0}, {0.5, 0.0}, {1.0, 0.5}};
     for (const auto& r : ranges) {
-      if (along(r[0], r[1])) return Match{true, false, r[0], r[1]};
+      if (along(s, o, r[0], r[1])) return Match{true, false, r[0], r[1]};
     }
-    // o being one half of s: o(t) = s(t/2) etc. (points 0, 1/4, 1/2 of s against 0, 1/2, 1 of o)
-    bool g1 = true, g1r = true, g2 = true, g2r = true;
-    for (int k = 0; k < 5; k += 2) {
-      g1 = g1 && same(b[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(k / 2)]);
-      g2 = g2 && same(b[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(2 + k / 2)]);
-      g1r = g1r && same(b[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(2 - k / 2)]);
-      g2r = g2r && same(b[static_cast<std::size_t>(k)], a[static_cast<std::size_t>(4 - k / 2)]);
+    for (const auto& r : ranges) {
+      if (std::abs(r[1] - r[0]) < 1.0 && along(o, s, r[0], r[1])) return Match{true, true, 0.0, 0.0};
     }
-    return Match{g1 || g1r || g2 || g2r, true, 0.0, 0.0};
+    return Match{};
   };
   // A side whose samples coincide (the collapsed side of a polar patch at its pole) is a point, no edge.
   auto degenerate = [&](Index s) {
     const auto& a = samples[static_cast<std::size_t>(s)];
-    return same(a[0], a[2]) && same(a[2], a[4]);
+    return same(a[0], a[8]) && same(a[8], a[16]);
   };
   std::vector<Index> candidates;
   for (Index s = 0; s < nsides; ++s) {
-    // Every side that covers s, or is half of it, passes through s's midpoint (as its midpoint, quarter
-    // point or end point).
+    // Every side that s is a piece of passes through s's midpoint at one of its samples; of the pieces of s, those
+    // next to s's midpoint end there.
     candidates.clear();
-    const Eigen::Vector3d& mid = samples[static_cast<std::size_t>(s)][2];
+    const Eigen::Vector3d& mid = samples[static_cast<std::size_t>(s)][8];
     for (int gi = 0; gi < 2; ++gi) {
       const Key k = key(mid, 0.5 * gi);
       const auto first = std::lower_bound(grid[gi].begin(), grid[gi].end(), std::make_pair(k, Index{-1}));
@@ -260,7 +266,7 @@ void PolyhedralSpace::build_sides() {
       const Match m = match(s, o);
       if (!m.found) continue;
       covered = true;
-      if (point || m.half_of_s) continue;
+      if (point || m.piece_of_s) continue;
       const bool whole = std::abs(std::abs(m.r1 - m.r0) - 1.0) < 1e-12;
       if (whole && o < s) continue;  // the same piece, listed from o
       interior_.push_back({{s / 4, o / 4}, {static_cast<int>(s % 4), static_cast<int>(o % 4)}, {0.0, m.r0}, {1.0, m.r1}, 1});

@@ -7,6 +7,7 @@
 #include "basis/polyhedral/configuration.hpp"
 #include "basis/polyhedral/space.hpp"
 #include "basis/polyhedral_nets.hpp"
+#include "fem/function.hpp"
 #include "fem/poisson.hpp"
 #include "fem/problems.hpp"
 #include "mesh/obj_reader.hpp"
@@ -102,15 +103,16 @@ TEST(PolyhedralPoisson, ConvergenceUnderNetRefinement) {
   // u = sin πx sin πy, nets refined by 0..3 Catmull–Clark steps (h halves; the receding boundary moves
   // toward the square, the exact solution is defined everywhere). Regular bi-2 patches only: L2 rate 3,
   // H1 rate 2 (measured 2.97 / 1.96 on the last pair). With star caps (square_evs.obj: valences 3, 5, 6,
-  // whose caps keep their patch count while the regular part grows) the measured rates are lower:
-  // L2 2.49, 2.30, 2.14 and H1 2.17, 1.75, 1.66 per level — asserted as floors below.
+  // whose caps keep their patch count while the regular part grows) the fitted rates are 2.78 and 1.88 (before
+  // issue 32 two interior curves were taken for boundary and held to the data: L2 2.49, 2.30, 2.14 and H1 2.17,
+  // 1.75, 1.66 per level) — asserted as floors below.
   struct Case {
     std::string name;
     mesh::PolyMesh net;
     double l2_floor, h1_floor;
   };
   std::vector<Case> cases{{"grid", grid(6), 2.9, 1.85},
-                          {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj"), 2.1, 1.6},
+                          {"square_evs", mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj"), 2.65, 1.8},
                           {"unit square with T0", square_with_t0(), 2.4, 1.5}};  // measured 2.55 / 1.63
   for (const Case& c : cases) {
     std::vector<double> l2, h1;
@@ -124,5 +126,55 @@ TEST(PolyhedralPoisson, ConvergenceUnderNetRefinement) {
     std::cout << c.name << ": fitted L2 rate " << rl2 << ", H1 rate " << rh1 << std::endl;
     EXPECT_GE(rl2, c.l2_floor) << c.name;
     EXPECT_GE(rh1, c.h1_floor) << c.name;
+  }
+}
+
+// Issue 32: in square_evs.obj a coarse patch's side meets four patches of a star cap, each along a quarter of it.
+// Sides were matched only as wholes or halves, so both sides of that curve (two of them in this net) were
+// reported as boundary: zero-area slits inside the domain on which the FEM imposed the Dirichlet data (right only
+// when the data are the exact solution). The torsion problem −Δu = 1, u = 0 on the boundary, shows it: by the
+// maximum principle u > 0 inside, but on a slit u_h was 0. Each slit runs through the point where the coarse
+// side's midpoint lies, (0.5104, 0.2396) and (0.5150, 0.4225) (from the net: sides of faces of square_evs.obj).
+TEST(PolyhedralPoisson, InteriorSidesMetInQuartersAreNotBoundary) {
+  const basis::Geometry g = basis::polyhedral::make_polyhedral_geometry(
+      mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj"));
+  fem::PoissonProblem p;
+  p.source = fem::constant_function(1.0);
+  const fem::PoissonResult r = fem::solve_poisson(g, quadrature::Gauss(4), p);
+  // u_h at every element's side midpoints near the two points, and its largest value.
+  const basis::Space& space = g.space();
+  const Eigen::Vector2d targets[2] = {{0.5104, 0.2396}, {0.5150, 0.4225}};
+  double near[2] = {-1.0, -1.0}, largest = 0.0;
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    Eigen::Matrix2Xd pts(2, 5);
+    for (int s = 0; s < 4; ++s) pts.col(s) = basis::side_point(space.kind(e).shape, s, 0.5);
+    pts.col(4) << 0.5, 0.5;
+    basis::BasisValues b;
+    space.evaluate(e, pts, 1, b);
+    basis::GeometryValues x;
+    g.evaluate(e, b, x, false);
+    const auto dofs = space.dofs(e);
+    for (int k = 0; k < 5; ++k) {
+      double u = 0.0;
+      for (std::size_t a = 0; a < dofs.size(); ++a) u += r.u(dofs[a]) * b.value(static_cast<Index>(a), k);
+      largest = std::max(largest, u);
+      for (int t = 0; t < 2; ++t) {
+        if ((x.x.col(k).head<2>() - targets[t]).norm() < 1e-3) near[t] = u;
+      }
+    }
+  }
+  for (int t = 0; t < 2; ++t) {
+    ASSERT_GE(near[t], 0.0) << "no side midpoint at target " << t;
+    EXPECT_GT(near[t], 0.3 * largest) << "u_h on the curve through target " << t << " (largest " << largest << ")";
+  }
+  // And that curve is now an interior edge: no boundary edge passes through either point.
+  for (const basis::BoundaryEdge& e : space.boundary_edges()) {
+    Eigen::Matrix2Xd pts(2, 1);
+    pts.col(0) = basis::side_point(space.kind(e.element).shape, e.side, 0.5);
+    basis::BasisValues b;
+    space.evaluate(e.element, pts, 1, b);
+    basis::GeometryValues x;
+    g.evaluate(e.element, b, x, false);
+    for (int t = 0; t < 2; ++t) EXPECT_GT((x.x.col(0).head<2>() - targets[t]).norm(), 1e-3) << "element " << e.element;
   }
 }

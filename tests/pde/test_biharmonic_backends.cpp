@@ -111,16 +111,18 @@ TEST(BiharmonicBackends, CatmullClarkAtExtraordinaryVertices) {
   EXPECT_GE(nc.l2, 0.99);
 }
 
-// Measured (bi-2 polyhedral splines, nets refined by Catmull-Clark steps 1-3): square_evs sine 1.15 / 1.35 / 0.78,
-// clamped bump 1.45 / 1.41 / 0.80 — below the issue's 0.9 in H2, as Poisson's H1 on the same star caps is below 2
-// (1.66, tests/fem/test_polyhedral_poisson.cpp): the caps' approximation order, not the solver, limits it.
+// Measured (bi-2 polyhedral splines, nets refined by Catmull-Clark steps 1-3): square_evs sine 1.29 / 1.31 / 0.74,
+// clamped bump 1.28 / 1.28 / 0.73 — below the issue's 0.9 in H2, as Poisson's H1 on the same star caps is below 2
+// (1.88, tests/fem/test_polyhedral_poisson.cpp): the caps' approximation order, not the solver, limits it. (Before
+// issue 32 two interior curves were taken for boundary and clamped to the exact data: 1.15 / 1.35 / 0.78 and
+// 1.45 / 1.41 / 0.80.)
 TEST(BiharmonicBackends, Polyhedral) {
   const Measured s = measure("polyhedral, square_evs, sine", "polyhedral", net("square_evs.obj"), {}, 1, "gauss:4", true);
   const Measured c = measure("polyhedral, square_evs, clamped bump", "polyhedral", net("square_evs.obj"), {}, 1, "gauss:4");
   EXPECT_GE(s.h2, 0.68);
   EXPECT_GE(s.l2, 1.05);
   EXPECT_GE(c.h2, 0.7);
-  EXPECT_GE(c.l2, 1.35);
+  EXPECT_GE(c.l2, 1.2);
 }
 
 TEST(BiharmonicBackends, HalfBox) {
