@@ -97,6 +97,8 @@ namespace {
 // over the element. A fold of a planar map is det J < 0 (below −kDegenerate × the same scale at output points,
 // which may sit on an extraordinary vertex where the map's derivatives vanish).
 constexpr double kDegenerate = 1e-12;
+// Above this the area element |x_u × x_v| (and an integral over it) overflows a double: 1e308 > (1e154)².
+constexpr double kLargestDerivative = 1e154;
 
 [[noreturn]] void fail_at(Index e, const GeometryValues& out, Index k, const std::string& what) {
   std::ostringstream msg;
@@ -113,6 +115,14 @@ void Geometry::finish(Index e, Index q, GeometryValues& out, bool check) const {
   // formulas, but neither |x_u × x_v|^2 nor G^{-1} over- or underflows for geometries in units of 1e±100.
   const double largest = std::max(out.xu.cwiseAbs().maxCoeff(), out.xv.cwiseAbs().maxCoeff());
   if (!std::isfinite(largest)) fail_at(e, out, 0, "the geometry map's derivatives are not finite");
+  if (check && largest > kLargestDerivative) {
+    std::ostringstream msg;
+    msg << std::setprecision(6) << "element " << e << ": the area element of the geometry map at (" << out.x(0, 0) << ", "
+        << out.x(1, 0) << (out.x(2, 0) != 0.0 ? ", " + std::to_string(out.x(2, 0)) : std::string()) << ")"
+        << std::setprecision(3) << " overflows a double (its derivatives are " << largest
+        << "); rescale the net: coordinates up to about 1e150 work";
+    throw NumericalError(msg.str());
+  }
   const int s = largest > 0.0 ? std::ilogb(largest) : 0;
   const double scale = std::ldexp(1.0, -s);  // T = J G^{-1} = 2^-s T_s, |x_u × x_v| = 2^2s |x_u,s × x_v,s|
   const double area = std::ldexp(1.0, 2 * s);
@@ -167,6 +177,29 @@ void Geometry::evaluate(Index e, const Eigen::Matrix2Xd& pts, GeometryValues& ou
   BasisValues basis;
   space_->evaluate(e, pts, 1, basis);
   evaluate(e, basis, out);
+}
+
+std::string Geometry::validity() const {
+  // 4-point Gauss–Legendre on [0, 1]; on a triangle element the collapsed square (a, b (1 − a)).
+  const double g[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281, 0.9305681557970263};
+  Eigen::Matrix2Xd square(2, 16), triangle(2, 16);
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      square.col(4 * i + j) << g[i], g[j];
+      triangle.col(4 * i + j) << g[i], g[j] * (1 - g[i]);
+    }
+  }
+  BasisValues basis;
+  GeometryValues values;
+  for (Index e = 0; e < space_->num_elements(); ++e) {
+    try {
+      space_->evaluate(e, space_->kind(e).shape == Shape::Triangle ? triangle : square, 1, basis);
+      evaluate(e, basis, values, true);
+    } catch (const NumericalError& error) {
+      return error.what();
+    }
+  }
+  return {};
 }
 
 }  // namespace iga::basis

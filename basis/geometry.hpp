@@ -3,6 +3,7 @@
 // domain (a planar region, dim 2, or a surface in 3D, dim 3).
 #include <Eigen/Core>
 #include <memory>
+#include <string>
 
 #include "basis/space.hpp"
 
@@ -45,6 +46,11 @@ class Geometry {
   void evaluate(Index e, const BasisValues& basis, GeometryValues& out, bool check = true, int derivatives = 1) const;
   /// Convenience: evaluates the basis first.
   void evaluate(Index e, const Eigen::Matrix2Xd& pts, GeometryValues& out) const;
+  /// What a solver would refuse in this map, as the message evaluate() with check gives at the first element
+  /// where it does ("element 5: det J = ... folds over at (x, y)", a degenerate or overflowing map), or empty when
+  /// every element is valid at its 4 × 4 Gauss points (the points of a program's default rule, or of any rule of
+  /// that size): for programs that show a geometry without solving on it (iga-geometry).
+  std::string validity() const;
 
  private:
   int majority_orientation() const;

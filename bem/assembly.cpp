@@ -6,6 +6,7 @@
 #include "bem/boundary_integrals.hpp"
 #include "bem/kernel_quadrature.hpp"
 #include "core/error.hpp"
+#include "fem/parallel_for.hpp"
 
 namespace iga::bem {
 
@@ -18,13 +19,14 @@ BemMatrices assemble(const BoundaryDiscretization& d) {
   m.H.resize(n, n);
   m.G.resize(n, n);
   m.free_term.resize(n);
-  bool ok = true;
-#pragma omp parallel for schedule(dynamic, 4) reduction(&& : ok)
-  for (Index i = 0; i < n; ++i) {
+  // An exception inside (a kernel's evaluation, memory) is rethrown after the loop, not std::terminate.
+  fem::parallel_for(n, [&](Index i) {
     const CollocationPoint& c = points[static_cast<std::size_t>(i)];
     const Eigen::Vector2d p = d.scaled_curve().point(c.curve_element, c.curve_t);
     Eigen::VectorXd h, g;
-    ok = integrator.integrate(p, c.curve_element, c.curve_t, h, g) && ok;
+    if (!integrator.integrate(p, c.curve_element, c.curve_t, h, g)) {
+      throw NumericalError("bem assembly: a collocation point lies on another part of the boundary");
+    }
     const double ci = -h.sum();
     basis::CurveBasisValues values;
     d.space().evaluate(c.element, Eigen::VectorXd::Constant(1, c.t), 0, values);
@@ -33,8 +35,7 @@ BemMatrices assemble(const BoundaryDiscretization& d) {
     m.H.row(i) = h.transpose();
     m.G.row(i) = g.transpose();
     m.free_term(i) = ci;
-  }
-  if (!ok) throw NumericalError("bem assembly: a collocation point lies on another part of the boundary");
+  }, 4);
   m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return m;
 }

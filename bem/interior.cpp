@@ -1,38 +1,38 @@
 #include "bem/interior.hpp"
 
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "bem/boundary_integrals.hpp"
 #include "core/error.hpp"
+#include "fem/parallel_for.hpp"
 
 namespace iga::bem {
 
 Eigen::VectorXd evaluate_interior(const BoundaryDiscretization& d, const Solution& solution,
                                   const Eigen::Matrix2Xd& points) {
   if (solution.u.size() != d.num_dofs() || solution.q.size() != d.num_dofs()) {
-    throw InputError("evaluate_interior: the solution has " + std::to_string(solution.u.size()) +
+    throw Error("bem interior evaluation: the solution has " + std::to_string(solution.u.size()) +
                      " coefficients for " + std::to_string(d.num_dofs()) + " dofs");
   }
   const BoundaryIntegrator integrator(d);
   const Eigen::VectorXd q_internal = solution.q / d.scale();
   const Index m = points.cols();
   Eigen::VectorXd out(m);
-  Index bad = -1;
-#pragma omp parallel for schedule(dynamic, 8)
-  for (Index k = 0; k < m; ++k) {
+  // A point on the boundary is refused by the lowest such index; an exception inside any body is rethrown after the
+  // loop (fem::parallel_for), not std::terminate.
+  fem::parallel_for(m, [&](Index k) {
     Eigen::VectorXd h, g;
-    const bool ok = integrator.integrate(points.col(k) * d.scale(), -1, std::numeric_limits<double>::quiet_NaN(), h, g);
-    out(k) = g.dot(q_internal) - h.dot(solution.u);
-    if (!ok) {
-#pragma omp critical(iga_bem_interior)
-      if (bad < 0 || k < bad) bad = k;
+    if (!integrator.integrate(points.col(k) * d.scale(), -1, std::numeric_limits<double>::quiet_NaN(), h, g)) {
+      std::ostringstream msg;
+      msg << std::setprecision(6) << "the point (" << points(0, k) << ", " << points(1, k)
+          << ") lies on the boundary, where the boundary integral representation does not hold";
+      throw InputError(msg.str());
     }
-  }
-  if (bad >= 0) {
-    throw InputError("evaluate_interior: point " + std::to_string(bad) + " (" + std::to_string(points(0, bad)) +
-                     ", " + std::to_string(points(1, bad)) + ") lies on the boundary");
-  }
+    out(k) = g.dot(q_internal) - h.dot(solution.u);
+  }, 8);
   return out;
 }
 

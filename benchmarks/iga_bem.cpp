@@ -41,6 +41,7 @@ struct Options {
   std::string json = "bem.json";
   double gmres_tolerance = 1e-12;
   double max_memory = 0.0;  // GiB; 0: what the system has available
+  double max_seconds = 600.0;  // the predicted time of --grid's interior evaluation
   int degree = 2, refine = 2, geometry_refine = -1, grid = 0, samples = 4, threads = 0;
   bool compare_fem = false, quiet = false;
   std::vector<std::string> given;
@@ -181,10 +182,8 @@ double mean_difference(const std::vector<Eigen::VectorXd>& a, const std::vector<
   return n ? s / static_cast<double>(n) : 0.0;
 }
 
-// --grid N: the solution at the centres of an N × N grid over the boundary's bounding box; "inside" is the
-// representation formula of u = 1, q = 0 (1 inside, 0 outside).
-nlohmann::json write_grid(const Options& o, const bem::BoundaryDiscretization& d, const bem::Solution& s,
-                          const fem::Function* exact) {
+// The centres of an N × N grid over the boundary's bounding box.
+Eigen::Matrix2Xd grid_points(const bem::BoundaryDiscretization& d, Index n) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = -lo;
   for (Index e = 0; e < d.curve().num_elements(); ++e) {
     for (double t : {0.0, 0.25, 0.5, 0.75}) {
@@ -193,15 +192,54 @@ nlohmann::json write_grid(const Options& o, const bem::BoundaryDiscretization& d
       hi = hi.cwiseMax(x);
     }
   }
+  Eigen::Matrix2Xd points(2, n * n);
+  for (Index j = 0; j < n; ++j) {
+    for (Index i = 0; i < n; ++i) {
+      points.col(i + n * j) = lo + Eigen::Vector2d((i + 0.5) / n * (hi - lo).x(), (j + 0.5) / n * (hi - lo).y());
+    }
+  }
+  return points;
+}
+
+// Time before work: the grid's interior evaluation (two per point: u and "inside") predicted from timing 64 of its
+// points spread over the grid (every point integrates over the whole boundary, so the cost per point varies little),
+// before the BEM is solved; refused above --max-seconds.
+void check_grid_time(const Options& o, const bem::BoundaryDiscretization& d) {
+  if (o.grid == 0) return;
+  const Index n = o.grid, total = n * n;
+  const Eigen::Matrix2Xd all = grid_points(d, n);
+  const Index m = std::min<Index>(64, total);
+  Eigen::Matrix2Xd sample(2, m);
+  for (Index k = 0; k < m; ++k) sample.col(k) = all.col(k * total / m);
+  bem::Solution zero;
+  zero.u = Eigen::VectorXd::Zero(d.num_dofs());
+  zero.q = Eigen::VectorXd::Zero(d.num_dofs());
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    bem::evaluate_interior(d, zero, sample);
+  } catch (const InputError& e) {
+    throw InputError("--grid " + std::to_string(n) + ": " + e.what() + "; choose another N");
+  }
+  const double per_point = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / m;
+  const double predicted = 2.0 * per_point * static_cast<double>(total);
+  if (predicted > o.max_seconds) {
+    std::ostringstream msg;
+    msg << std::setprecision(3) << "--grid " << n << ": the interior evaluation of its " << static_cast<double>(total)
+        << " points would take about " << predicted << " s (" << per_point * 1e3 << " ms per point and evaluation on "
+        << fem::num_threads() << " threads, measured on " << m << " of them), more than --max-seconds " << o.max_seconds
+        << "; choose a smaller N or raise --max-seconds";
+    throw InputError(msg.str());
+  }
+}
+
+// --grid N: the solution at the centres of an N × N grid over the boundary's bounding box; "inside" is the
+// representation formula of u = 1, q = 0 (1 inside, 0 outside).
+nlohmann::json write_grid(const Options& o, const bem::BoundaryDiscretization& d, const bem::Solution& s,
+                          const fem::Function* exact) {
   const Index n = o.grid;
   io::GridData g;
   g.nx = g.ny = n;
-  g.points.resize(2, n * n);
-  for (Index j = 0; j < n; ++j) {
-    for (Index i = 0; i < n; ++i) {
-      g.points.col(i + n * j) = lo + Eigen::Vector2d((i + 0.5) / n * (hi - lo).x(), (j + 0.5) / n * (hi - lo).y());
-    }
-  }
+  g.points = grid_points(d, n);
   Eigen::VectorXd u;
   try {
     u = bem::evaluate_interior(d, s, g.points);
@@ -296,6 +334,7 @@ int run(const Options& o) {
   log("BEM on " + std::to_string(d.num_dofs()) + " dofs, " + std::to_string(d.num_elements()) + " elements on " +
       std::to_string(trace.curve.loops().size()) + " boundary loop(s), " + std::to_string(d.segments().size()) +
       " segment(s); " + std::to_string(fem::num_threads()) + " threads");
+  check_grid_time(o, d);
   bem::SolveOptions so;
   so.solver = parse_solver(o.solver);
   so.gmres_tolerance = o.gmres_tolerance;
@@ -436,6 +475,7 @@ int main(int argc, char** argv) {
   app.add_option("--boundary-vtu", o.boundary_vtu, "boundary u and q as polylines ('none' to skip)")->capture_default_str();
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
+  app.add_option("--max-seconds", o.max_seconds, "seconds the --grid interior evaluation may take: predicted before the solve from 64 of its points, a longer one is refused")->check(io::finite_number(1e-3, 1e9))->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(io::finite_number(0.001, 1e6));
   io::CommonOptions common{"iga-bem"};
   io::add_common_options(app, common);

@@ -60,15 +60,9 @@ int run(Options& o) {
     report["vtu"] = r.ranks > 1 ? io::summary_path(o.vtu) : o.vtu;
     if (!o.run.quiet) std::cerr << "iga-elasticity: wrote " << report["vtu"].get<std::string>() << std::endl;
   };
-  if (fem::rank() == 0) {
-    io::check_writable(o.json);  // before the work, not after it
-    io::check_writable(o.vtu);
-  }
-  const nlohmann::json report = io::run_problem_program(o.run);
-  if (io::writes(o.json) && fem::rank() == 0) {
-    io::write_json(o.json, report);
-    if (!o.run.quiet) std::cerr << "iga-elasticity: wrote " << o.json << std::endl;
-  }
+  o.run.json = o.json;
+  o.run.output_paths = {o.vtu};
+  io::run_problem_program(o.run);
   return 0;
 }
 

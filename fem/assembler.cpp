@@ -8,36 +8,13 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <sstream>
+#include <iomanip>
 
 #include "core/error.hpp"
+#include "fem/parallel_for.hpp"
 
 namespace iga::fem {
-
-namespace {
-// Runs body(i) for i in [0, n) with OpenMP. When bodies throw, the exception of the lowest index is rethrown
-// after the loop, whatever the thread count and timing (an index is skipped only above a known failure, so every
-// lower one runs): the same input gives the same message.
-template <class Body>
-void parallel_for(Index n, Body&& body) {
-  std::exception_ptr error;
-  std::atomic<Index> failed_at{n};
-  std::mutex m;
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    if (i > failed_at.load(std::memory_order_relaxed)) continue;
-    try {
-      body(i);
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(m);
-      if (i < failed_at.load()) {
-        error = std::current_exception();
-        failed_at = i;
-      }
-    }
-  }
-  if (error) std::rethrow_exception(error);
-}
-}  // namespace
 
 namespace {
 // Physical gradients (nloc × dim·q, blocks per component) from the parametric ones and the gradient transform.
@@ -308,7 +285,13 @@ void Assembler::prepare_side(Index e, int side, double t0, double t1, const quad
   ctx.conormal.resize(3, q);
   for (Index i = 0; i < q; ++i) {
     const Eigen::Vector3d tangent = dt(0) * ctx.geo.xu.col(i) + dt(1) * ctx.geo.xv.col(i);
-    const double len = tangent.norm();
+    const double len = tangent.stableNorm();
+    if (!(len <= 1e154)) {  // as Geometry::evaluate refuses inside: products of two such lengths overflow a double
+      std::ostringstream msg;
+      msg << std::setprecision(3) << "element " << e << ": integrals over its boundary side overflow a double (the "
+          << "geometry map's derivatives there are " << len << "); rescale the net: coordinates up to about 1e150 work";
+      throw NumericalError(msg.str());
+    }
     ctx.weight(i) = line.weights(i) * len;
     // The side's own direction (counter-clockwise on the element) gives the outward conormal, whatever the
     // sign of t1 - t0.

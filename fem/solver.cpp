@@ -3,6 +3,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/IterativeLinearSolvers>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -81,9 +82,15 @@ SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b
                            std::to_string(cg.error()) + ")");
     }
   }
-  const double bn = b.norm();
-  r.residual_norm = (a * r.x - b).norm() / (bn > 0 ? bn : 1.0);
+  // Scaled norms (stableNorm): a system of entries near 1e200 (--reaction 1e200) has a finite residual whose plain
+  // norm overflows, and the ratio was NaN.
+  const double bn = b.stableNorm();
+  r.residual_norm = (a * r.x - b).stableNorm() / (bn > 0 ? bn : 1.0);
   if (!r.x.allFinite()) throw NumericalError(r.solver + ": the solution is not finite");
+  if (!std::isfinite(r.residual_norm)) {
+    throw NumericalError(r.solver + ": the residual of the solution is not finite (" + std::to_string(a.rows()) +
+                         " unknowns): the system's entries overflow a double; scale the data (coefficients, source)");
+  }
   if (!(r.residual_norm <= options.max_residual)) {
     std::ostringstream msg;
     msg << std::setprecision(3) << r.solver << ": relative residual " << r.residual_norm << " of the solution is above "

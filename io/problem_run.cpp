@@ -13,6 +13,7 @@
 #include "fem/memory.hpp"
 #include "fem/parallel.hpp"
 #include "fem/threads.hpp"
+#include "io/report.hpp"
 #include "io/run_program.hpp"
 
 namespace iga::io {
@@ -90,6 +91,10 @@ nlohmann::json run_problem_program(const ProblemProgram& run) {
   const auto log = [&](const std::string& text) {
     if (!run.quiet) std::cerr << run.program << ": " << text << std::endl;
   };
+  if (fem::rank() == 0) {
+    check_writable(run.json);  // before the work, not after it
+    for (const std::string& path : run.output_paths) check_writable(path);
+  }
   if (run.threads > 0) fem::set_num_threads(run.threads);
   Progress progress(run.program, run.quiet);
   const Discretisation d = make_discretisation(run.discretisation);
@@ -133,6 +138,10 @@ nlohmann::json run_problem_program(const ProblemProgram& run) {
   j["total_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   j["phase_seconds"] = progress.json();
   if (run.timer_table) progress.print_table();
+  if (writes(run.json) && fem::rank() == 0) {
+    write_json(run.json, j);
+    log("wrote " + run.json);
+  }
   return j;
 }
 

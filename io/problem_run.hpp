@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "fem/parallel.hpp"
 #include "fem/problem.hpp"
@@ -80,11 +81,16 @@ struct ProblemProgram {
   /// Writes the output of the solve (every rank calls it: a distributed run writes its pieces), names the files in
   /// the report; runs as the phase "output".
   std::function<void(const basis::Geometry&, const fem::ProblemResult&, nlohmann::json& report)> output;
+  /// The paths `output` writes ("none" or empty: none), checked before the work (io::check_writable).
+  std::vector<std::string> output_paths;
+  /// The JSON report's path ("none" or empty: none): checked before the work, written (rank 0) at the end.
+  std::string json;
 };
 
 /// The run: the discretisation (its size checked against the memory before it is made: the solve of
 /// components × (degree + 1)² functions per element and the output), the problem, the pipeline in phases, the
-/// output; returns the report (run_info, discretisation_report, report_problem_result, total and phase seconds).
+/// output; returns the report (run_info, discretisation_report, report_problem_result, total and phase seconds),
+/// written to run.json. Every output path is checked first: an unwritable one is the only line, before any work.
 /// The log goes to stderr as "PROGRAM: ..." unless quiet.
 nlohmann::json run_problem_program(const ProblemProgram& run);
 

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -122,6 +123,24 @@ inline nlohmann::json run_info(const CLI::App& app, const std::string& program) 
           {"schema_version", kReportSchemaVersion}, {"settings", settings}};
 }
 
+namespace detail {
+/// CLI11's own phrases in the programs' words: "--mesh: 1 required TEXT:FILE missing" (a value is missing), "--json:
+/// At Most 1 required but received 3" (an option given more than once), "Could not convert: --x = v".
+inline std::string plain_cli_message(const std::string& what) {
+  static const std::regex missing(R"(^(\S+): [0-9]+ required \S+ missing$)");
+  static const std::regex at_most(R"(^(\S+): At Most ([0-9]+) required but received ([0-9]+)$)");
+  static const std::regex convert(R"(^Could not convert: (\S+) = (.*)$)");
+  std::smatch m;
+  if (std::regex_match(what, m, missing)) return m[1].str() + ": its value is missing";
+  if (std::regex_match(what, m, at_most)) {
+    return m[1].str() + " takes " + (m[2].str() == "1" ? std::string("one value") : m[2].str() + " values") +
+           ", got " + m[3].str() + " (is it given more than once?)";
+  }
+  if (std::regex_match(what, m, convert)) return m[1].str() + ": cannot read '" + m[2].str() + "' as its value";
+  return what;
+}
+}  // namespace detail
+
 /// Parses argv. Returns an exit code when the program must stop now: 0 after --help or --version, 2 (one line on
 /// stderr) on a usage error (CLI11's own codes mapped), 1 (one line) for an input file or --config file that is not
 /// there or is a folder, 1 when --export-config cannot be written; std::nullopt
@@ -168,7 +187,7 @@ inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** arg
     for (char& c : what) {
       if (c == '\n') c = ' ';
     }
-    std::cerr << program << ": error: " << what << std::endl;
+    std::cerr << program << ": error: " << detail::plain_cli_message(what) << std::endl;
     // A file that is not there (an input option's, or --config's) is bad input, not a usage error.
     const bool missing_file = detail::input_file_missing() || dynamic_cast<const CLI::FileError*>(&e) != nullptr;
     return missing_file ? 1 : 2;

@@ -55,8 +55,9 @@ struct Settings {
 };
 
 // Tries one (n, q[, diagonal points]) and prints one line.
-mf::FitResult try_fit(int n, int q, int diagonal, const Settings& s) {
+mf::FitResult try_fit(int n, int q, int diagonal, const Settings& s, std::chrono::steady_clock::time_point deadline) {
   mf::FitOptions o = s.fit;
+  o.deadline = deadline;  // --time-limit holds inside a fit too (NLopt's maxtime, no new attempt after it)
   o.space = mf::parse_space(s.space);
   o.symmetric = s.symmetric;
   o.diagonal_points = diagonal;
@@ -112,6 +113,8 @@ void run_elimination(int n, const Settings& s) {
   mf::FitOptions o = s.fit;
   o.space = mf::parse_space(s.space);
   const auto t0 = std::chrono::steady_clock::now();
+  o.deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(s.time_limit));
   const iga::quadrature::Rule start = iga::quadrature::tiled_rule(s.eliminate[0], s.eliminate[1]);
   const mf::FitResult r = mf::eliminate_points(n, start, o, std::max(1, s.first_points));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -119,6 +122,7 @@ void run_elimination(int n, const Settings& s) {
               "(||b|| = %.2e; %d removal steps tried, %.1f s)\n", n, s.space.c_str(), s.eliminate[0], s.eliminate[1],
               static_cast<int>(start.size()), r.converged ? "CONVERGED" : "start not exact", r.points, r.residual,
               r.rule.weights.minCoeff(), mf::moments(n, o.space).norm(), std::max(0, static_cast<int>(r.attempts.size()) - 1), seconds);
+  if (std::chrono::steady_clock::now() >= *o.deadline) say("n=%2d: time limit reached (--time-limit %g s): the rule above is the smallest found by then\n", n, s.time_limit);
   std::fflush(stdout);
   if (r.converged && !s.output.empty()) {
     mf::Table t;
@@ -137,6 +141,8 @@ void run_elimination(int n, const Settings& s) {
 
 void run_valence(int n, const Settings& s) {
   const auto t0 = std::chrono::steady_clock::now();
+  const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                 std::chrono::duration<double>(s.time_limit));
   const int first = s.first_points > 0 ? s.first_points : std::max(1, n + s.start);
   const int last = s.last_points > 0 ? s.last_points : n + 4 + s.max_extra;
   for (int q = first; q <= last; q += s.step) {
@@ -146,7 +152,7 @@ void run_valence(int n, const Settings& s) {
       for (int d = q % 2; d <= q; d += 2) diagonals.push_back(d);
     }
     for (const int d : diagonals) {
-      const mf::FitResult r = try_fit(n, q, d, s);
+      const mf::FitResult r = try_fit(n, q, d, s, deadline);
       if (r.converged) {
         if (!s.output.empty()) {
           mf::Table t;
@@ -164,7 +170,7 @@ void run_valence(int n, const Settings& s) {
         }
         return;
       }
-      if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > s.time_limit) {
+      if (std::chrono::steady_clock::now() >= deadline) {
         say("n=%2d: time limit reached, no rule\n", n);
         return;
       }
@@ -207,7 +213,7 @@ int main(int argc, char** argv) {
   app.add_option("--output", s.output, "directory for the tables (default and none: do not write)")->check(iga::io::non_blank());
   app.add_flag("--survey", s.survey, "run every random start (success rates) instead of stopping at the first");
   app.add_flag("--symmetric", s.symmetric, "only rules symmetric about u = v (all diagonal point counts)");
-  app.add_option("--time-limit", s.time_limit, "seconds per valence")->check(iga::io::finite_number(0))->capture_default_str();
+  app.add_option("--time-limit", s.time_limit, "seconds per valence: no fit attempt or elimination step starts after it, and a running fit stops at it")->check(iga::io::finite_number(0))->capture_default_str();
   app.add_option("--attempts", s.fit.attempts, "random starts per q")->check(iga::io::whole_number(1, 100000))->capture_default_str();
   app.add_option("--seed", s.fit.seed, "random seed (attempt k uses seed + k)");
   app.add_option("--algorithm", s.fit.algorithm, "NLopt first stage")->check(CLI::IsMember({"LD_LBFGS", "LD_SLSQP", "LD_MMA", "LN_BOBYQA", "none"}))->capture_default_str();

@@ -120,6 +120,9 @@ int run(const Options& o) {
   iga::basis::BackendFacts facts;
   const iga::basis::Geometry geometry = iga::basis::make_geometry(backend, &net, bo, facts);
   for (const std::string& note : facts.notes) log(note);
+  // A viewer may show a geometry no solver accepts, but says what is wrong with it (also with --quiet): the JSON's
+  // "valid" and, once the files are written, a warning line (a write that fails on it says so in its one line).
+  const std::string invalid = geometry.validity();
   std::vector<iga::io::BvPatch> patches;
   for (iga::basis::BezierPatch& p : backend.bezier_patches(geometry, bo, facts)) {
     if (p.triangle) {
@@ -135,6 +138,8 @@ int run(const Options& o) {
   j["net_vertices"] = net.num_vertices();
   j["net_faces"] = net.num_faces();
   j["elements"] = geometry.space().num_elements();
+  j["valid"] = invalid.empty();
+  if (!invalid.empty()) j["invalid_reason"] = invalid;
   j["degree"] = iga::basis::degree(backend, bo);
   j["bv_patches"] = static_cast<Index>(patches.size());
   j["bv_skipped"] = 0;
@@ -168,6 +173,7 @@ int run(const Options& o) {
     iga::io::write_json(o.json, j);
     log("wrote " + o.json);
   }
+  if (!invalid.empty()) std::cerr << "iga-geometry: warning: " << invalid << "; iga-poisson refuses this geometry" << std::endl;
   return 0;
 }
 

@@ -274,8 +274,13 @@ double nlopt_objective(unsigned dim, const double* x, double* grad, void* data) 
   return r.squaredNorm();
 }
 
+bool past(const std::optional<std::chrono::steady_clock::time_point>& deadline) {
+  return deadline && std::chrono::steady_clock::now() >= *deadline;
+}
+
 void run_nlopt(Problem& pb, const std::string& algorithm, int max_evaluations, double tolerance,
-               const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, Eigen::VectorXd& x) {
+               const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, Eigen::VectorXd& x,
+               const std::optional<std::chrono::steady_clock::time_point>& deadline) {
   nlopt::opt opt(parse_algorithm(algorithm), static_cast<unsigned>(pb.dimension()));
   opt.set_lower_bounds(std::vector<double>(lo.data(), lo.data() + lo.size()));
   opt.set_upper_bounds(std::vector<double>(hi.data(), hi.data() + hi.size()));
@@ -284,6 +289,10 @@ void run_nlopt(Problem& pb, const std::string& algorithm, int max_evaluations, d
   opt.set_ftol_abs(1e-32);
   opt.set_xtol_rel(1e-15);
   opt.set_maxeval(max_evaluations);
+  if (deadline) {
+    const double left = std::chrono::duration<double>(*deadline - std::chrono::steady_clock::now()).count();
+    opt.set_maxtime(std::max(left, 1e-3));
+  }
   std::vector<double> xs(x.data(), x.data() + x.size());
   double value = 0.0;
   try {
@@ -383,10 +392,11 @@ FitResult fit_rule(int valence, int points, const FitOptions& options) {
   pb.bounds(lo, hi);
   double best = std::numeric_limits<double>::infinity();
   for (int attempt = 0; attempt < options.attempts; ++attempt) {
+    if (attempt > 0 && past(options.deadline)) break;
     std::mt19937 gen(options.seed + static_cast<unsigned>(attempt));
     Eigen::VectorXd x = random_start(pb, gen);
     pb.evaluations = 0;
-    if (options.algorithm != "none") run_nlopt(pb, options.algorithm, options.max_evaluations, options.tolerance, lo, hi, x);
+    if (options.algorithm != "none") run_nlopt(pb, options.algorithm, options.max_evaluations, options.tolerance, lo, hi, x, options.deadline);
     polish(pb, options.polish_iterations, lo, hi, x);
     const Rule rule = pb.expand(x);
     Attempt a;
@@ -458,7 +468,7 @@ FitResult eliminate_points(int valence, const Rule& start, const FitOptions& opt
     }
   }
   const Eigen::Index rows = pb.projection != nullptr ? pb.projection->rows() : pb.b->size();
-  while (current.size() > min_points) {
+  while (current.size() > min_points && !past(options.deadline)) {
     Eigen::MatrixXd f;
     evaluate_functions(valence, options.space, current.points, f);
     std::vector<std::pair<double, Eigen::Index>> significance;
@@ -467,7 +477,7 @@ FitResult eliminate_points(int valence, const Rule& start, const FitOptions& opt
     // Many points left: remove a batch (5 % of them) per step; near the end one at a time.
     const Eigen::Index batch = current.size() > 2 * rows ? std::max<Eigen::Index>(1, current.size() / 20) : 1;
     bool accepted = false;
-    for (int k = 0; k < options.attempts && !accepted; ++k) {
+    for (int k = 0; k < options.attempts && !accepted && !past(options.deadline); ++k) {
       std::vector<bool> drop(static_cast<std::size_t>(current.size()), false);
       for (Eigen::Index j = 0; j < batch; ++j) {
         const auto pick = static_cast<std::size_t>(batch == 1 ? k : j);
@@ -503,7 +513,7 @@ FitResult eliminate_points(int valence, const Rule& start, const FitOptions& opt
     if (!accepted) {
       // Batch failed: fall back to single removals by pretending the batch threshold is passed.
       bool single = false;
-      for (int k = 0; k < options.attempts && !single; ++k) {
+      for (int k = 0; k < options.attempts && !single && !past(options.deadline); ++k) {
         Rule trial;
         trial.points.resize(2, current.size() - 1);
         trial.weights.resize(current.size() - 1);

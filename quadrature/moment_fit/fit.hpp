@@ -2,6 +2,8 @@
 // Moment fitting of quadrature rules for Catmull–Clark elements at an extraordinary vertex (thesis §4.2.4):
 // q points (u_i, v_i) in (0,1]² and weights w_i > 0 with Φ w = b, Φ_{m,i} = f_m(u_i, v_i), b_m = ∫ f_m over
 // [0,1]², for a family of functions f_m built from the 2n+8 subdivision splines φ_m of valence n.
+#include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,9 @@ struct FitOptions {
   std::string algorithm = "LD_SLSQP";
   int max_evaluations = 3000;    ///< first stage
   int polish_iterations = 300;   ///< second stage
+  /// A time limit: no attempt (fit_rule: after the first) or removal step (eliminate_points) starts after it, and
+  /// NLopt's first stage stops at it (its maxtime). None: no limit.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 /// One random start.
