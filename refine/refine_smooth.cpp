@@ -64,7 +64,7 @@ struct Layout {
 };
 
 Layout make_layout(int degree, const double* t, Index k, const std::vector<double>& new_knots) {
-  if (k > (Index{1} << 29)) throw UnsupportedError("refine_smooth: more than 2^29 knots");
+  if (k > (Index{1} << 29)) throw UnsupportedError("refine-smooth: more than 2^29 knots are not supported");
   Layout L;
   L.d = degree;
   L.k = k;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <string>
 
@@ -150,7 +151,7 @@ struct Window {
   }
   void fill(const Shape& S, Index upto) {
     if (upto - base > static_cast<Index>(u.size())) {
-      throw NumericalError("refine_smooth: the knot window is too small (internal error)");
+      throw NumericalError("refine-smooth (internal error): the knot window is too small");
     }
     while (gen.z < upto) {
       const Index z = gen.z;
@@ -356,7 +357,7 @@ long long run_chunk(const Shape& S, Index c0, Index c1, Index& first, Index& got
     }
     if (inner) {  // every point survives
       if (b0 < first || b1 - first > S.expected) {
-        throw NumericalError("refine_smooth: more control points survive the end conditions than " +
+        throw NumericalError("refine-smooth (internal error): more control points survive the end conditions than " +
                              std::to_string(S.expected));
       }
       for (Index c = 0; c < dim; ++c) {
@@ -370,7 +371,7 @@ long long run_chunk(const Shape& S, Index c0, Index c1, Index& first, Index& got
       if (v && first < 0) first = q;
       const Index row = first < 0 ? -1 : q - first;
       if (v != (row >= 0 && row < S.expected)) {
-        throw NumericalError("refine_smooth: the control points surviving the end conditions are not " +
+        throw NumericalError("refine-smooth (internal error): the control points surviving the end conditions are not " +
                              std::to_string(S.expected) + " consecutive ones");
       }
       if (!v) continue;
@@ -397,7 +398,7 @@ long long run_all(const Shape& S) {
     c0 = c1;
   }
   if (c0 < S.n) {
-    if (first < 0) throw NumericalError("refine_smooth: no control point survived the end conditions");
+    if (first < 0) throw NumericalError("refine-smooth (internal error): no control point survived the end conditions");
     const Index chunks = (S.n - c0 + chunk - 1) / chunk;
     std::exception_ptr error;
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : combinations, got)
@@ -413,7 +414,7 @@ long long run_all(const Shape& S) {
     if (error) std::rethrow_exception(error);
   }
   if (got != S.expected) {
-    throw NumericalError("refine_smooth: " + std::to_string(got) + " control points survived the end conditions, " +
+    throw NumericalError("refine-smooth (internal error): " + std::to_string(got) + " control points survived the end conditions, " +
                          std::to_string(S.expected) + " expected");
   }
   return combinations;
@@ -428,13 +429,19 @@ void check_new_knot(const double* t, Index k, Index j, double x, int d) {
   Index m = 1;                           // only the runs at the interval ends can equal x
   for (Index i = j; i >= 0 && t[i] == x; --i) ++m;
   for (Index i = j + 1; i < k && t[i] == x; ++i) ++m;
-  if (m > d) throw InputError("refine_smooth: new knot " + std::to_string(x) + " would have multiplicity above the degree");
+  if (m > d) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    throw InputError("the knot " + std::string(text) + " would appear " + std::to_string(m) +
+                     " times: refine-smooth keeps the curve C^0 at least, so a knot appears at most degree (" +
+                     std::to_string(d) + ") times (boehm and oslo allow degree + 1)");
+  }
 }
 
 bool refine_smooth_stream(int d, const double* t, Index k, const Eigen::MatrixXd& cp, const NewKnots& knots,
                           long long& count, Eigen::MatrixXd& out, std::vector<double>& out_knots,
                           std::size_t offset) {
-  if (k > (Index{1} << 29)) throw UnsupportedError("refine_smooth: more than 2^29 knots");
+  if (k > (Index{1} << 29)) throw UnsupportedError("refine-smooth: more than 2^29 knots are not supported");
   Shape S;
   S.d = d;
   S.t = t;

@@ -23,7 +23,7 @@ Eigen::SparseMatrix<double> refine_smooth_matrix(int degree, const std::vector<d
   SplineCurve c;
   c.degree = degree;
   c.knots = knots;
-  if (n < 1) throw InputError("refine_smooth_matrix: too few knots for degree " + std::to_string(degree));
+  if (n < 1) throw InputError("refine-smooth: too few knots for degree " + std::to_string(degree));
   const Index groups = degree + 2;
   std::vector<Eigen::Triplet<double>> trip;
   const auto& t = knots;
@@ -46,7 +46,7 @@ Eigen::SparseMatrix<double> refine_smooth_matrix(int degree, const std::vector<d
           break;
         }
       }
-      if (owner < 0) throw NumericalError("refine_smooth_matrix: a fine coefficient outside every coarse support");
+      if (owner < 0) throw NumericalError("refine-smooth (internal error): a fine coefficient outside every coarse support");
       trip.emplace_back(static_cast<int>(i), static_cast<int>(owner), v);
     }
   }
