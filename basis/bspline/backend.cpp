@@ -60,8 +60,9 @@ Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts& f
                                                        : std::shared_ptr<const TensorSpace>(geometry.space_ptr(), &tensor_of(geometry));
   Eigen::SparseMatrix<double> total;
   for (int s = 0; s < steps; ++s) {
-    auto fine = std::make_shared<const TensorSpace>(bspline::insert_midpoints(coarse->knots_u()),
-                                                    bspline::insert_midpoints(coarse->knots_v()));
+    const std::string step = "refinement " + std::to_string(s + 1) + ": the ";
+    auto fine = std::make_shared<const TensorSpace>(bspline::insert_midpoints(coarse->knots_u(), step + "u knot interval"),
+                                                    bspline::insert_midpoints(coarse->knots_v(), step + "v knot interval"));
     Eigen::SparseMatrix<double> r = bspline::refinement_matrix(*coarse, *fine);
     if (s == 0) {
       total.swap(r);

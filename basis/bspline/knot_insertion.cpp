@@ -1,6 +1,8 @@
 #include "basis/bspline/knot_insertion.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include "core/error.hpp"
 
@@ -59,14 +61,27 @@ Eigen::SparseMatrix<double> refinement_matrix(const KnotVector& coarse, const Kn
   return oslo_matrix(p, coarse.knots(), fine.knots());
 }
 
-KnotVector insert_midpoints(const KnotVector& kv) {
+std::string too_narrow_to_halve(double a, double b, const std::string& which) {
+  char text[96];
+  std::snprintf(text, sizeof text, " [%.17g, %.17g]", a, b);
+  return which + text + " is too narrow to halve in double precision: its midpoint rounds to an end, so halving " +
+         "it would repeat a knot instead";
+}
+
+KnotVector insert_midpoints(const KnotVector& kv, const std::string& which) {
   std::vector<double> t;
   t.reserve(kv.knots().size() + kv.interval_spans().size());
   const Index m = kv.size();
+  Index interval = 0;
   for (Index i = 0; i < m; ++i) {
     t.push_back(kv[i]);
     if (i + 1 < m && kv[i] < kv[i + 1] && i >= kv.degree() && i < kv.num_basis()) {
-      t.push_back(0.5 * (kv[i] + kv[i + 1]));
+      const double mid = 0.5 * (kv[i] + kv[i + 1]);
+      if (!(kv[i] < mid && mid < kv[i + 1])) {
+        throw InputError(too_narrow_to_halve(kv[i], kv[i + 1], which + " " + std::to_string(interval)));
+      }
+      t.push_back(mid);
+      ++interval;
     }
   }
   return KnotVector(kv.degree(), std::move(t));

@@ -5,6 +5,7 @@
 #include <Eigen/Sparse>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "basis/bspline/knot_vector.hpp"
@@ -34,7 +35,12 @@ Eigen::SparseMatrix<double> oslo_matrix(int p, std::span<const double> coarse, s
 /// every knot of coarse (with at least its multiplicity) on the same domain.
 Eigen::SparseMatrix<double> refinement_matrix(const KnotVector& coarse, const KnotVector& fine);
 
-/// The knot vector with the midpoint of every non-empty interval inserted once.
-KnotVector insert_midpoints(const KnotVector& kv);
+/// The knot vector with the midpoint of every non-empty interval inserted once. InputError, naming the interval as
+/// `which` + its 0-based index among the non-empty ones, when one is too narrow to halve (too_narrow_to_halve).
+KnotVector insert_midpoints(const KnotVector& kv, const std::string& which = "interval");
+
+/// The message for a knot interval [a, b] whose midpoint rounds to one of its ends in double precision (`which`:
+/// "interval 3", in the user's numbering): halving it would repeat a knot instead.
+std::string too_narrow_to_halve(double a, double b, const std::string& which);
 
 }  // namespace iga::basis::bspline

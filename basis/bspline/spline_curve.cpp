@@ -94,7 +94,9 @@ std::vector<double> interval_midpoints(const SplineCurve& c, const std::vector<I
     }
     if (k > 0 && i <= chosen[k - 1]) throw InputError("intervals must be strictly increasing");
     const auto mu = static_cast<std::size_t>(spans[static_cast<std::size_t>(i)]);
-    mids.push_back(0.5 * (c.knots[mu] + c.knots[mu + 1]));
+    const double a = c.knots[mu], b = c.knots[mu + 1], mid = 0.5 * (a + b);
+    if (!(a < mid && mid < b)) throw InputError(too_narrow_to_halve(a, b, "interval " + std::to_string(i)));
+    mids.push_back(mid);
   }
   return mids;
 }

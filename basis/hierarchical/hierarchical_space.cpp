@@ -51,7 +51,7 @@ HierarchicalSpace::HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hiera
   if (static_cast<int>(refined_.size()) > hierarchy_->max_level()) {
     throw UnsupportedError("hierarchical space: level " + std::to_string(refined_.size()) +
                            " is deeper than the " + std::to_string(hierarchy_->max_level()) + " levels the '" +
-                           hierarchy_->name() + "' hierarchy can index");
+                           hierarchy_->name() + "' hierarchy can index (and its knots resolve in double precision)");
   }
   for (std::size_t l = 0; l < refined_.size(); ++l) {
     for (Key c : refined_[l]) {

@@ -1,5 +1,6 @@
 #include "basis/thb/dyadic_levels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 
@@ -33,6 +34,13 @@ DyadicKnots::DyadicKnots(const bspline::KnotVector& coarse) : p_(coarse.degree()
 int DyadicKnots::max_level() const {
   int m = 0;
   while (m < 44 && (Key{k_ + p_ + extra_.back()} << (m + 1)) < (Key{1} << 60)) ++m;
+  // A level's breakpoints must stay distinct doubles: its intervals at least 64 rounding units of their knots wide
+  // (a narrower coarse interval would be "halved" into repeated knots).
+  for (Index c = 0; c < k_; ++c) {
+    const double a = b_[static_cast<std::size_t>(c)], b = b_[static_cast<std::size_t>(c + 1)];
+    const double unit = std::nextafter(std::max(std::abs(a), std::abs(b)), HUGE_VAL) - std::max(std::abs(a), std::abs(b));
+    while (m > 0 && std::ldexp(b - a, -m) < 64.0 * unit) --m;
+  }
   return m;
 }
 

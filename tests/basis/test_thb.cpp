@@ -320,6 +320,20 @@ TEST_P(ThbDegree, InteriorEdgesTileTheSkeleton) {
   EXPECT_NEAR(length, 0.5 * (perimeter - boundary), 1e-12);
 }
 
+TEST(DyadicKnots, LevelsStopWhereTheirBreakpointsStopBeingDistinctDoubles) {
+  // A coarse interval [1, 1 + 2^-40]: its level-m breakpoints are 1 + r 2^(-40-m), distinct doubles down to
+  // m = 12 (spacing 2^-52, one rounding unit); max_level keeps each level's intervals >= 64 units wide (2^-46),
+  // so m <= 6. Before, the limit was 44 whatever the width, and refinement "halved" into repeated knots.
+  const double a = 1.0, b = 1.0 + std::ldexp(1.0, -40);
+  const basis::thb::DyadicKnots narrow(basis::bspline::KnotVector(2, {0, 0, 0, a, b, 2, 2, 2}));
+  EXPECT_EQ(narrow.max_level(), 6);
+  for (basis::hierarchical::Key j = 0; j < narrow.num_intervals(narrow.max_level()); ++j) {
+    EXPECT_LT(narrow.breakpoint(narrow.max_level(), j), narrow.breakpoint(narrow.max_level(), j + 1)) << static_cast<long long>(j);
+  }
+  // Unit intervals keep the 44 levels.
+  EXPECT_EQ(basis::thb::DyadicKnots(basis::bspline::KnotVector(2, {0, 0, 0, 1, 2, 2, 2})).max_level(), 44);
+}
+
 INSTANTIATE_TEST_SUITE_P(Degrees, ThbDegree, ::testing::Values(2, 3));
 
 }  // namespace
