@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "basis/fold_certificate.hpp"
 #include "core/error.hpp"
 
 namespace iga::basis {
@@ -48,14 +49,22 @@ int degree(const Backend& backend, const BackendOptions& options) {
   return options.degree == BackendOptions::kUnset ? backend.default_degree : options.degree;
 }
 
+namespace {
+// Every geometry a program builds is proved not to fold where its elements have a polynomial form (a fold between
+// the points of a rule was solved with exit 0 before: issue 38).
+Geometry certified(Geometry g) {
+  if (const std::string why = fold_certificate(g); !why.empty()) throw NumericalError(why);
+  return g;
+}
+}  // namespace
+
 Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
                        BackendFacts& facts) {
   if (net && !options.geometry.empty()) throw InputError("--geometry and --mesh exclude each other");
-  if (net) return backend.from_net(*net, options, facts);
-  if (!backend.default_geometry) {
+  if (!net && !backend.default_geometry) {
     throw InputError("--basis " + backend.name + " needs --mesh (a control net)");
   }
-  return backend.default_geometry(options);
+  return certified(net ? backend.from_net(*net, options, facts) : backend.default_geometry(options));
 }
 
 mesh::PolyMesh net_with_control_points(const mesh::PolyMesh& net, const Geometry& geometry,
@@ -75,7 +84,7 @@ Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* n
                                  int steps, BackendFacts& facts) {
   if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
   if (!backend.nested && net && steps > 0 && backend.refine_net) {
-    Geometry g = backend.from_net(backend.refine_net(*net, steps, options, facts), options, facts);
+    Geometry g = certified(backend.from_net(backend.refine_net(*net, steps, options, facts), options, facts));
     return {std::move(g), Eigen::SparseMatrix<double>(), false};
   }
   return refine_uniform(make_geometry(backend, net, options, facts), steps, facts);
