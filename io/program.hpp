@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/config_file.hpp"
 #include "io/report.hpp"
 #include "io/run_program.hpp"
 #include "io/version.hpp"
@@ -58,12 +59,16 @@ inline std::string version_line(const std::string& program) {
   return program + " " + version() + " (git " + git_revision() + ")";
 }
 
-/// Adds --version, --quiet, --config FILE (TOML or INI: `name = value`, option names without dashes; command-line
-/// options override the file) and --export-config FILE.
+/// Adds --version, --quiet, --config FILE (`name = value`, option names without dashes, io/config_file.hpp; command-
+/// line options override the file) and --export-config FILE. A config file's unknown name or [section] is an error
+/// naming the file and line (parse_command_line), and the values written by --export-config are quoted so that any
+/// path reads back as it was (ProgramConfig).
 inline void add_common_options(CLI::App& app, CommonOptions& common) {
+  app.config_formatter(std::make_shared<ProgramConfig>());
+  app.allow_config_extras(CLI::config_extras_mode::error);  // check_config_file has said which line already
   app.set_version_flag("--version", version_line(common.program), "print the program's version and git revision");
-  app.set_config("--config", "", "read options from a TOML/INI file (name = value, names without dashes); options "
-                                 "given on the command line override it");
+  app.set_config("--config", "", "read options from a TOML/INI file (name = value, names without dashes; a name that "
+                                 "is not an option is an error); options given on the command line override it");
   app.add_option("--export-config", common.export_config,
                  "write this run's options as a --config file ('-': standard output) and go on; options left at their "
                  "defaults are listed as comments")
@@ -87,7 +92,8 @@ inline std::string setting_name(const CLI::Option* opt) {
 }  // namespace detail
 
 /// The effective configuration as a --config file (TOML): the options that were set (on the command line or in
-/// a --config file) as CLI11 writes them, then the others with their defaults as comments.
+/// a --config file) as ProgramConfig writes them (text quoted and escaped), then the others with their defaults as
+/// comments.
 inline std::string export_config_text(const CLI::App& app, const std::string& program) {
   std::string text = "# " + version_line(program) + ": options of one run (read back with --config FILE)\n";
   text += app.config_to_str(false, false);
@@ -96,7 +102,8 @@ inline std::string export_config_text(const CLI::App& app, const std::string& pr
     const std::string name = detail::setting_name(opt);
     if (name.empty() || opt->count() > 0) continue;
     const std::string d = opt->get_expected_min() == 0 ? "false" : opt->get_default_str();
-    defaults += "# " + name + " = " + (d.empty() ? "(not set: the program's default)" : d) + "\n";
+    defaults += "# " + name + " = " +
+                (d.empty() ? std::string("(not set: the program's default)") : detail::config_value_text(d)) + "\n";
   }
   if (!defaults.empty()) text += "# left at their defaults:\n" + defaults;
   return text;
@@ -143,8 +150,9 @@ inline std::string plain_cli_message(const std::string& what) {
 
 /// Parses argv. Returns an exit code when the program must stop now: 0 after --help or --version, 2 (one line on
 /// stderr) on a usage error (CLI11's own codes mapped), 1 (one line) for an input file or --config file that is not
-/// there or is a folder, 1 when --export-config cannot be written; std::nullopt
-/// when the run goes on.
+/// there or is a folder, 1 for a --config file with a line that is not one of the program's options
+/// ("FILE:LINE: unknown option 'refin' (did you mean 'refine'?)", a [section], a value that does not parse), 1 when
+/// --export-config cannot be written; std::nullopt when the run goes on.
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CommonOptions& common) {
   const std::string& program = common.program;
   // --config FILE: a file that is not there is bad input, said in the words of input_file().
@@ -156,6 +164,12 @@ inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** arg
     const std::string problem = file.empty() ? std::string() : detail::input_file_problem(file);
     if (!problem.empty()) {
       std::cerr << program << ": error: --config: " << problem << std::endl;
+      return 1;
+    }
+    // Every line of it is one of this program's options, said before CLI11 reads it (which would skip the others).
+    const std::string wrong = file.empty() || file == "-" ? std::string() : check_config_file(app, file);
+    if (!wrong.empty()) {
+      std::cerr << program << ": error: " << wrong << std::endl;
       return 1;
     }
   }
