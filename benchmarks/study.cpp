@@ -57,7 +57,7 @@ std::string file_name(const std::string& path) {
 nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
 std::string level_name(int degree, int k) {
-  return (degree > 0 ? "degree " + std::to_string(degree) + ", " : std::string()) + std::to_string(k);
+  return std::to_string(k) + (degree > 0 ? " (degree " + std::to_string(degree) + ")" : std::string());
 }
 
 // The levels of one degree: each solved by the program's pipeline, its row added to the table. Before each level
@@ -255,8 +255,9 @@ int run_study(const StudyOptions& o, const StudyHooks& hooks) {
     if (!stopped.empty()) break;
   }
   if (!stopped.empty()) {
-    log("study stopped after " + std::to_string(series.back().levels.size()) + " levels of " +
-        (series.size() > 1 ? "series " + std::to_string(series.size()) : std::string("the series")) + ": " + stopped);
+    const nlohmann::json& done = series.back().levels.back();
+    log("study stopped after degree " + std::to_string(done["degree"].get<int>()) + ", level " +
+        std::to_string(done["refine"].get<int>()) + ": " + stopped);
   }
   nlohmann::json j;
   const nlohmann::json& first = series.front().levels.at(0);
