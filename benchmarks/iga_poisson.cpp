@@ -22,6 +22,7 @@
 #include "fem/problems.hpp"
 #include "fem/threads.hpp"
 #include "io/discretisation_options.hpp"
+#include "io/forecast.hpp"
 #include "io/program.hpp"
 #include "io/net_writer.hpp"
 #include "io/problem_run.hpp"
@@ -49,6 +50,7 @@ struct Options {
   std::string dirichlet_method = "strong";
   double nitsche_penalty = 0.0;  ///< 0: the local estimate
   double max_memory = 0.0;  ///< GiB; 0: what the system has available
+  double max_seconds = 0.0;  ///< --adaptive steps and --study levels stop before one predicted to end past it; 0: none
   bool quiet = false, mean_zero = false;
   std::string study, degrees, study_output = "study", plots = "png,svg";  ///< --study K0:K1 and its options
   bool vtu_given = false, json_given = false;
@@ -170,12 +172,38 @@ nlohmann::json adaptive_rates(const std::vector<iga::refine::AdaptiveStep>& hist
   return j;
 }
 
+// A step's wall time (io::StepForecast: from the end of the step before, its refinement and output included) and
+// the time predicted for the step after it (none for the last).
+struct StepTimes {
+  double wall = 0.0;
+  std::optional<double> predicted_next;
+};
+
+// The adaptive loop's check after each step: the step's progress line with the forecast of the next, and the time
+// limit (--max-seconds): the reason to stop before a step predicted to end past it, or once the time is spent.
+iga::refine::StepCheck step_check(iga::io::StepForecast& forecast, std::vector<StepTimes>& times, const Log& log) {
+  return [&forecast, &times, log, built = false](const iga::refine::AdaptiveStep& st,
+                                                 const std::optional<iga::refine::NextStep>& next) mutable {
+    forecast.done(static_cast<double>(st.dofs), built, forecast.elapsed());
+    const std::string next_name = next ? std::to_string(next->step) : std::string();
+    const bool builds = next && next->builds_level;
+    times.push_back({forecast.last_seconds(), next ? std::optional<double>(forecast.predict(builds)) : std::nullopt});
+    log("step " + std::to_string(st.step) + ": " + std::to_string(st.dofs) + " dofs, " + std::to_string(st.levels) +
+        " levels, estimate " + std::to_string(st.estimate) +
+        (st.energy_error ? ", energy error " + std::to_string(*st.energy_error) : std::string()) + "; " +
+        forecast.progress(next_name, builds));
+    built = builds;
+    return next ? forecast.stop_reason(next_name, builds, forecast.elapsed()) : std::string();
+  };
+}
+
 // --adaptive: solve → estimate → mark → refine, one .vtu per step and a .pvd series; r is the last step's result.
 // Returns the report's "adaptive" object.
 nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis::Geometry& geometry,
                               const iga::quadrature::RuleProvider& rules, const iga::fem::PoissonProblem& problem,
                               const iga::fem::SolverOptions& solver, const iga::io::VtuOutput& vtu_output,
-                              iga::fem::PoissonResult& r, std::optional<iga::basis::Geometry>& last, const Log& log) {
+                              iga::fem::PoissonResult& r, std::optional<iga::basis::Geometry>& last,
+                              iga::io::StepForecast& forecast, const Log& log) {
   using namespace iga;
   refine::AdaptiveOptions ao;
   ao.steps = o.adaptive;
@@ -186,9 +214,6 @@ nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis
   const std::string base = o.vtu.size() > 4 && o.vtu.substr(o.vtu.size() - 4) == ".vtu" ? o.vtu.substr(0, o.vtu.size() - 4) : o.vtu;
   std::vector<io::SeriesEntry> series;
   auto on_step = [&](const refine::AdaptiveStep& st, const basis::Geometry& g, const fem::PoissonResult& res, const fem::Estimate& est) {
-    log("step " + std::to_string(st.step) + ": " + std::to_string(st.dofs) + " dofs, " + std::to_string(st.levels) +
-        " levels, estimate " + std::to_string(st.estimate) +
-        (st.energy_error ? ", energy error " + std::to_string(*st.energy_error) : std::string()));
     r = res;
     last = g;
     if (s.write_vtu) {
@@ -201,11 +226,14 @@ nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis
       io::write_pvd(base + ".pvd", series);
     }
   };
-  const refine::AdaptiveRun run = refine::adaptive_solve(geometry, rules, problem, solver, ao, on_step);
+  std::vector<StepTimes> times;
+  const refine::AdaptiveRun run =
+      refine::adaptive_solve(geometry, rules, problem, solver, ao, on_step, step_check(forecast, times, log));
   const std::vector<refine::AdaptiveStep>& history = run.history;
   if (run.stopped != "steps") log("adaptive loop stopped after step " + std::to_string(history.back().step) + ": " + run.stopped);
   nlohmann::json adaptive_json = {{"steps", o.adaptive}, {"theta", o.theta}, {"marking", refine::to_string(ao.marking)},
-                                  {"max_dofs", o.max_dofs}, {"admissibility", o.admissibility}, {"stopped", run.stopped}};
+                                  {"max_dofs", o.max_dofs}, {"admissibility", o.admissibility},
+                                  {"max_seconds", o.max_seconds}, {"stopped", run.stopped}};
   if (s.write_vtu) adaptive_json["pvd"] = base + ".pvd";
   for (const refine::AdaptiveStep& st : history) {
     auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
@@ -217,6 +245,9 @@ nlohmann::json solve_adaptive(const Options& o, const Setup& s, const iga::basis
          {"seconds", {{"setup", st.setup_seconds}, {"assembly", st.assembly_seconds}, {"solve", st.solve_seconds},
                       {"errors", st.error_seconds}, {"estimate", st.estimate_seconds}, {"mark", st.mark_seconds},
                       {"refine", st.refine_seconds}}}});
+    const StepTimes& t = times.at(static_cast<std::size_t>(st.step));
+    adaptive_json["history"].back()["wall_seconds"] = t.wall;
+    adaptive_json["history"].back()["predicted_next_seconds"] = t.predicted_next ? nlohmann::json(*t.predicted_next) : nlohmann::json(nullptr);
   }
   adaptive_json["convergence"] = adaptive_rates(history, log);
   return adaptive_json;
@@ -303,6 +334,7 @@ nlohmann::json solve_run(const Options& o) {
     io::check_writable(o.net_vtu);
   }
   io::Progress progress("iga-poisson", o.quiet);
+  io::StepForecast forecast(o.max_seconds);  // the time limit counts from here
   const Setup s = make_setup(o);
   check_predicted_size(o, s);
   basis::BackendFacts facts;
@@ -327,7 +359,7 @@ nlohmann::json solve_run(const Options& o) {
   std::optional<basis::Geometry> last;  // the adaptive loop's last geometry
   if (o.adaptive >= 0) {
     j["adaptive"] = progress.phase("adaptive loop", [&] {
-      return solve_adaptive(o, s, geometry, *rules, problem, solver, vtu_output, r, last, log);
+      return solve_adaptive(o, s, geometry, *rules, problem, solver, vtu_output, r, last, forecast, log);
     });
   } else {
     r = solve_in_phases(geometry, *rules, problem, solver, progress);
@@ -387,6 +419,7 @@ int study(const Options& o) {
   so.vtu = o.vtu_given ? o.vtu : std::string();
   so.json = o.json_given ? o.json : std::string();
   so.quiet = o.quiet;
+  so.max_seconds = o.max_seconds;
   auto level = [&o](int degree, int refine, const std::string& vtu) {
     Options lo = o;
     lo.d.refine = refine;
@@ -445,6 +478,7 @@ int main(int argc, char** argv) {
   app.add_option("--vtu-degree", o.vtu_degree, "--vtu-format bezier: degree of the cells of elements that are not polynomial")->check(iga::io::whole_number(1, 16))->capture_default_str();
   app.add_option("--net", o.net_vtu, "write the control net to this .vtu: the control points, and the --mesh faces whose corners are control points as polygons")->check(iga::io::non_blank());
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
+  app.add_option("--max-seconds", o.max_seconds, "--adaptive and --study: a time limit in seconds (default 0: none); before each step (level) its time is predicted from the steps done, and one predicted to end past the limit is not started: the report and output are those of the last complete step, the report's \"stopped\" and one line on stderr say why (exit 0)")->check(iga::io::finite_number(0.0, 1e9))->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
   auto* study_option = app.add_option("--study", o.study, "convergence study over refinement levels K0:K1 (at least 3), each solved in this process: a table with rates on stderr, PREFIX.csv, PREFIX.json, plots; with --vtu a .vtu per level and a .pvd")
       ->check(CLI::Validator([](std::string& t) { return iga::bench::check_levels(t); }, "K0:K1"))
@@ -464,6 +498,10 @@ int main(int argc, char** argv) {
   iga::io::CommonOptions common{"iga-poisson"};
   iga::io::add_common_options(app, common);
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  if (app.count("--max-seconds") > 0 && o.adaptive < 0 && o.study.empty()) {
+    std::cerr << "iga-poisson: error: --max-seconds requires --adaptive or --study" << std::endl;
+    return 2;
+  }
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
   iga::io::record_given_options(app, o.d);

@@ -11,6 +11,7 @@
 #include "benchmarks/python_script.hpp"
 #include "core/error.hpp"
 #include "fem/convergence.hpp"
+#include "io/forecast.hpp"
 #include "io/report.hpp"
 #include "io/vtu_writer.hpp"
 
@@ -55,13 +56,25 @@ std::string file_name(const std::string& path) {
 
 nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
-// The levels of one degree: each solved by the program's pipeline, its row added to the table.
-Series run_series(const StudyOptions& o, const StudyHooks& hooks, int degree, const Log& log) {
+std::string level_name(int degree, int k) {
+  return std::to_string(k) + (degree > 0 ? " (degree " + std::to_string(degree) + ")" : std::string());
+}
+
+// The levels of one degree: each solved by the program's pipeline, its row added to the table. Before each level
+// but the study's first, the time limit (forecast, over the levels of this degree): `stopped` set and no more levels
+// when it says stop.
+Series run_series(const StudyOptions& o, const StudyHooks& hooks, int degree, bool first_series,
+                  io::StepForecast& forecast, std::string& stopped, const Log& log) {
   Series s;
   s.degree = degree;
   const std::string base = vtu_base(o);
   std::vector<io::SeriesEntry> entries;
+  forecast.restart();  // a new degree starts on the coarse level again
   for (int k = o.levels.first; k <= o.levels.last; ++k) {
+    if (k > o.levels.first || !first_series) {  // the study's first level runs: nothing to predict it from
+      stopped = forecast.stop_reason(level_name(degree, k), false, forecast.elapsed());
+      if (!stopped.empty()) break;
+    }
     const std::string vtu = base.empty() ? std::string() : base + name_part(degree) + "_k" + std::to_string(k) + ".vtu";
     nlohmann::json level = hooks.solve(degree, k, vtu);
     if (level["l2_error"].is_null() || level["h1_error"].is_null()) {
@@ -73,8 +86,10 @@ Series run_series(const StudyOptions& o, const StudyHooks& hooks, int degree, co
     const double seconds = level["assembly_seconds"].get<double>() + level["solve_seconds"].get<double>();
     s.table.add_row({k, level["dofs"].get<Index>(), level["elements"].get<Index>(), h,
                      {level["l2_error"].get<double>(), level["h1_error"].get<double>()}, seconds});
+    forecast.done(level["dofs"].get<double>(), false, forecast.elapsed());
     log("study: degree " + std::to_string(level["degree"].get<int>()) + ", level " + std::to_string(k) + " done: " +
-        std::to_string(level["dofs"].get<Index>()) + " dofs");
+        std::to_string(level["dofs"].get<Index>()) + " dofs; " +
+        forecast.progress(k < o.levels.last ? level_name(degree, k + 1) : std::string(), false));
     if (!vtu.empty()) {
       entries.push_back({static_cast<double>(k), file_name(vtu)});
       s.pvd = base + name_part(degree) + ".pvd";
@@ -224,15 +239,25 @@ int run_study(const StudyOptions& o, const StudyHooks& hooks) {
   };
   const std::vector<int> degrees = o.degrees.empty() ? std::vector<int>{0} : o.degrees;
   for (int d : degrees) hooks.check_size(d, o.levels.last);  // the finest levels, before any work
+  io::StepForecast forecast(o.max_seconds, "--max-seconds", "level");
+  std::string stopped;
   std::vector<Series> series;
   for (int d : degrees) {
-    series.push_back(run_series(o, hooks, d, log));
+    Series done = run_series(o, hooks, d, series.empty(), forecast, stopped, log);
+    if (done.levels.empty()) break;  // stopped before its first level
+    series.push_back(std::move(done));
     const nlohmann::json& first = series.back().levels.at(0);
     if (!o.quiet) {
       std::cerr << "\nconvergence study: " << first["basis"].get<std::string>() << ", degree " << first["degree"]
                 << ", " << first["mesh"].get<std::string>() << "; rates e ~ h^r, h = sqrt(area / elements)\n"
                 << series.back().table.text() << std::endl;
     }
+    if (!stopped.empty()) break;
+  }
+  if (!stopped.empty()) {
+    const nlohmann::json& done = series.back().levels.back();
+    log("study stopped after degree " + std::to_string(done["degree"].get<int>()) + ", level " +
+        std::to_string(done["refine"].get<int>()) + ": " + stopped);
   }
   nlohmann::json j;
   const nlohmann::json& first = series.front().levels.at(0);
@@ -244,7 +269,9 @@ int run_study(const StudyOptions& o, const StudyHooks& hooks) {
                 {"degrees", o.degrees},
                 {"h", "sqrt(domain_measure / elements): the side of a square of the mean element area"},
                 {"rates", "log(e_{k-1} / e_k) / log(h_{k-1} / h_k), e ~ h^r; fitted_rates: least-squares slope of "
-                          "log e over log h of all levels; *_dofs: the same with N^(-1/dimension), N = dofs"}};
+                          "log e over log h of all levels; *_dofs: the same with N^(-1/dimension), N = dofs"},
+                {"max_seconds", o.max_seconds},
+                {"stopped", stopped.empty() ? std::string("levels") : stopped}};
   for (const Series& s : series) j["series"].push_back(series_json(s));
   const bool files = o.output != "none";
   if (files) {

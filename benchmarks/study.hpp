@@ -31,6 +31,10 @@ struct StudyOptions {
   std::string json;               ///< "" or "none": only PREFIX.json; else the report here too ("-": stdout)
   std::string plots = "png,svg";  ///< png,svg | png | svg | none
   bool quiet = false;
+  /// A time limit (0: none): before each level but the first its time is predicted (io::StepForecast, from the
+  /// levels of the same degree done), and the study stops before a level predicted to end past the limit or once
+  /// the time is spent; the report's study.stopped says why ("levels" when every level ran).
+  double max_seconds = 0.0;
 };
 
 struct StudyHooks {

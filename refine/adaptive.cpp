@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "basis/hierarchical/hierarchical_space.hpp"
 #include "core/error.hpp"
 
 namespace iga::refine {
@@ -11,11 +12,53 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+// One solve and estimate on `current` (step `step`); r and est are the solve's result and estimate.
+AdaptiveStep solve_step(int step, const basis::Geometry& current, const quadrature::RuleProvider& rules,
+                        const fem::PoissonProblem& problem, const fem::SolverOptions& solver,
+                        std::optional<fem::PoissonSolver>& ps, fem::Estimate& est) {
+  AdaptiveStep s;
+  s.step = step;
+  ps.emplace(current, rules, problem, solver);
+  ps->setup();
+  ps->assemble();
+  ps->solve();
+  ps->errors();
+  const fem::PoissonResult& r = ps->result();
+  s.assembly_seconds = r.assembly_seconds - r.pattern_seconds;
+  s.setup_seconds = r.pattern_seconds;
+  s.solve_seconds = r.solve_seconds;
+  s.error_seconds = r.error_seconds;
+  est = fem::estimate_residual(*ps);
+  s.estimate_seconds = est.seconds;
+  s.dofs = r.dofs;
+  s.elements = r.elements;
+  s.quadrature_points = r.quadrature_points;
+  for (Index e = 0; e < current.space().num_elements(); ++e) s.levels = std::max(s.levels, current.space().level(e) + 1);
+  s.estimate = est.total;
+  if (r.errors) {
+    const double energy = std::sqrt(r.errors->h1 * r.errors->h1 + problem.reaction * r.errors->l2 * r.errors->l2);
+    s.energy_error = energy;
+    s.l2_error = r.errors->l2;
+    if (energy > 0) s.efficiency = est.total / energy;
+  }
+  return s;
+}
+
+// Whether refining `marked` needs a level of the hierarchy that is not built yet.
+bool builds_level(const basis::Geometry& current, const std::vector<Index>& marked) {
+  const auto* h = dynamic_cast<const basis::hierarchical::HierarchicalSpace*>(&current.space());
+  if (!h) return false;  // the first refinement: level 1 of the coarse space
+  int deepest = 0;
+  for (Index e : marked) deepest = std::max(deepest, current.space().level(e));
+  return deepest + 1 <= h->hierarchy().max_level() && !h->hierarchy().level_built(deepest + 1);
+}
 }  // namespace
 
 AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
                                          const fem::PoissonProblem& problem, const fem::SolverOptions& solver,
-                                         const AdaptiveOptions& options, const StepCallback& on_step) {
+                                         const AdaptiveOptions& options, const StepCallback& on_step,
+                                         const StepCheck& check) {
   if (options.steps < 0) throw InputError("adaptive: steps must be >= 0");
   const basis::Backend& backend = basis::backend_of(geometry.space());
   if (!backend.refine_marked) {
@@ -24,48 +67,35 @@ AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::Ru
   AdaptiveRun run;
   std::vector<AdaptiveStep>& history = run.history;
   basis::Geometry current = geometry;
+  auto finish = [&](AdaptiveStep& s, std::string why) {
+    if (check) check(s, std::nullopt);
+    run.stopped = std::move(why);
+    history.push_back(s);
+  };
   for (int step = 0;; ++step) {
-    AdaptiveStep s;
-    s.step = step;
-    fem::PoissonSolver ps(current, rules, problem, solver);
-    auto t = std::chrono::steady_clock::now();
-    ps.setup();
-    s.setup_seconds = seconds_since(t);
-    ps.assemble();
-    ps.solve();
-    ps.errors();
-    const fem::PoissonResult& r = ps.result();
-    s.assembly_seconds = r.assembly_seconds - r.pattern_seconds;
-    s.setup_seconds = r.pattern_seconds;
-    s.solve_seconds = r.solve_seconds;
-    s.error_seconds = r.error_seconds;
-    const fem::Estimate est = fem::estimate_residual(ps);
-    s.estimate_seconds = est.seconds;
-    s.dofs = r.dofs;
-    s.elements = r.elements;
-    s.quadrature_points = r.quadrature_points;
-    for (Index e = 0; e < current.space().num_elements(); ++e) s.levels = std::max(s.levels, current.space().level(e) + 1);
-    s.estimate = est.total;
-    if (r.errors) {
-      const double energy = std::sqrt(r.errors->h1 * r.errors->h1 + problem.reaction * r.errors->l2 * r.errors->l2);
-      s.energy_error = energy;
-      s.l2_error = r.errors->l2;
-      if (energy > 0) s.efficiency = est.total / energy;
-    }
-    const bool last = step >= options.steps || (options.max_dofs > 0 && r.dofs >= options.max_dofs);
-    if (on_step) on_step(s, current, r, est);
+    std::optional<fem::PoissonSolver> ps;
+    fem::Estimate est;
+    AdaptiveStep s = solve_step(step, current, rules, problem, solver, ps, est);
+    const bool last = step >= options.steps || (options.max_dofs > 0 && s.dofs >= options.max_dofs);
+    if (on_step) on_step(s, current, ps->result(), est);
     if (last) {
-      run.stopped = step >= options.steps ? "steps" : "max_dofs";
-      history.push_back(s);
+      finish(s, step >= options.steps ? "steps" : "max_dofs");
       break;
     }
-    t = std::chrono::steady_clock::now();
+    auto t = std::chrono::steady_clock::now();
     const std::vector<Index> marked = mark(est.indicators, options.marking, options.theta);
     s.mark_seconds = seconds_since(t);
     if (marked.empty()) {
-      run.stopped = "estimate is zero";
-      history.push_back(s);
+      finish(s, "estimate is zero");
       break;  // nothing left to refine
+    }
+    if (check) {
+      std::string why = check(s, NextStep{step + 1, builds_level(current, marked)});
+      if (!why.empty()) {
+        run.stopped = std::move(why);
+        history.push_back(s);
+        break;
+      }
     }
     t = std::chrono::steady_clock::now();
     basis::BackendFacts facts;

@@ -39,10 +39,24 @@ struct AdaptiveStep {
 using StepCallback = std::function<void(const AdaptiveStep&, const basis::Geometry&, const fem::PoissonResult&,
                                         const fem::Estimate&)>;
 
+/// The step to come, as known once the last one's elements are marked.
+struct NextStep {
+  int step = 0;
+  /// Its refinement needs a level of the hierarchy that is not built yet (LevelHierarchy::level_built: Catmull–Clark
+  /// builds a whole level, 4 times the elements of the one above, on first use).
+  bool builds_level = false;
+};
+
+/// Called after each step (after on_step, and after marking when a step follows): `next` is the step to come, or
+/// none when the loop ends anyway (the steps asked for, --max-dofs, nothing marked). Returns "" to go on, or why
+/// the loop stops before `next` (the run's `stopped`; the last solve is kept), e.g. a time limit.
+using StepCheck = std::function<std::string(const AdaptiveStep& done, const std::optional<NextStep>& next)>;
+
 struct AdaptiveRun {
   std::vector<AdaptiveStep> history;
-  /// Why the loop ended: "steps", "max_dofs", "estimate is zero", or "deepest level: ..." when a marked element
-  /// could not be refined because the hierarchy has no finer level (the last solve is kept).
+  /// Why the loop ended: "steps", "max_dofs", "estimate is zero", "deepest level: ..." when a marked element
+  /// could not be refined because the hierarchy has no finer level, or the reason the StepCheck gave (the last
+  /// solve is kept).
   std::string stopped;
 };
 
@@ -50,6 +64,7 @@ struct AdaptiveRun {
 /// UnsupportedError (before any solve) when the geometry's backend has no local refinement.
 AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::RuleProvider& rules,
                                          const fem::PoissonProblem& problem, const fem::SolverOptions& solver,
-                                         const AdaptiveOptions& options, const StepCallback& on_step = {});
+                                         const AdaptiveOptions& options, const StepCallback& on_step = {},
+                                         const StepCheck& check = {});
 
 }  // namespace iga::refine

@@ -68,6 +68,7 @@ class CatmullClarkLevels final : public hierarchical::LevelHierarchy {
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& subdivision(int level) const;
   /// Levels built so far.
   int built_levels() const;
+  bool level_built(int level) const override { return level < built_levels(); }
 
  private:
   struct Level;

@@ -37,6 +37,13 @@ class LevelHierarchy {
   virtual std::string name() const = 0;
   /// The deepest level the scheme can index (cells and functions of deeper levels would overflow Key, or knots would round together).
   virtual int max_level() const = 0;
+  /// Whether level l is ready without a build. Hierarchies that build a whole level on first use (Catmull–Clark: a
+  /// level has 4^l times the elements of level 0) say false for the levels not built yet, so that the adaptive
+  /// loop's time forecast (io::StepForecast) can count the build in the step that needs it.
+  virtual bool level_built(int level) const {
+    (void)level;
+    return true;
+  }
   /// Cells of level 0, numbered 0..num_root_cells()-1 (deeper levels are never enumerated).
   virtual Index num_root_cells() const = 0;
   /// Cell c of level l + 1 in slot 0..3 of cell `cell` of level l. Child slot k covers the reference

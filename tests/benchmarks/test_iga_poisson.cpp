@@ -338,6 +338,65 @@ TEST_F(IgaPoisson, AdaptiveWritesASeriesAndTheHistory) {
   }
 }
 
+// Issue 38: --max-seconds stops the adaptive loop cleanly. A limit already spent after the first step (which always
+// runs: nothing to predict it from) stops before the second with exit 0; the report, its top-level figures and the
+// .pvd are those of the last complete step, and the report says why it stopped. Without --quiet one line says it.
+TEST_F(IgaPoisson, AdaptiveStopsCleanlyAtTheTimeLimit) {
+  const std::string args = "--geometry l-shape --problem corner --degree 2 --refine 1 --adaptive 40 --theta 1 "
+                           "--max-seconds 0.001 --vtu ad.vtu --json ad.json";
+  const Outcome r = run("--quiet " + args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const nlohmann::json j = report("ad.json");
+  const nlohmann::json& a = j["adaptive"];
+  EXPECT_EQ(a["max_seconds"].get<double>(), 0.001);
+  const std::string stopped = a["stopped"].get<std::string>();
+  EXPECT_EQ(stopped.rfind("time limit: ", 0), 0u) << stopped;
+  EXPECT_NE(stopped.find(" s used of --max-seconds 0.001"), std::string::npos) << stopped;
+  ASSERT_EQ(a["history"].size(), 1u);  // of the 41 solves asked for
+  EXPECT_EQ(j["dofs"], a["history"].back()["dofs"]);
+  EXPECT_EQ(j["dofs"].get<long>(), 28);
+  EXPECT_GT(a["history"].back()["wall_seconds"].get<double>(), 0.0);
+  EXPECT_GT(a["history"].back()["predicted_next_seconds"].get<double>(), 0.0);
+  EXPECT_TRUE(fs::exists(dir_ / "ad_step000.vtu"));
+  EXPECT_FALSE(fs::exists(dir_ / "ad_step001.vtu"));
+  vtkSmartPointer<vtkXMLDataElement> pvd;
+  pvd.TakeReference(vtkXMLUtilities::ReadElementFromFile((dir_ / "ad.pvd").c_str()));
+  ASSERT_NE(pvd, nullptr);
+  EXPECT_EQ(pvd->GetNestedElement(0)->GetNumberOfNestedElements(), 1);
+  const Outcome loud = run(args);
+  ASSERT_EQ(loud.code, 0) << loud.err;
+  EXPECT_NE(loud.err.find("\niga-poisson: adaptive loop stopped after step 0: time limit: "), std::string::npos) << loud.err;
+  EXPECT_NE(loud.err.find("iga-poisson: step 0: 28 dofs, 1 levels, "), std::string::npos) << loud.err;
+  EXPECT_NE(loud.err.find("; step 1 predicted "), std::string::npos) << loud.err;  // the progress line's forecast
+  // A generous limit changes nothing: every step runs and the loop stops for the steps asked for.
+  ASSERT_EQ(run("--quiet --geometry l-shape --problem corner --degree 2 --refine 1 --adaptive 2 --max-seconds 1000000 "
+                "--vtu none --json ad.json").code, 0);
+  EXPECT_EQ(report("ad.json")["adaptive"]["stopped"], "steps");
+  EXPECT_EQ(report("ad.json")["adaptive"]["history"].size(), 3u);
+}
+
+// The same for --study: the first level runs, the next is not started once the limit is spent; the study's files
+// hold the levels done and say why it stopped.
+TEST_F(IgaPoisson, StudyStopsCleanlyAtTheTimeLimit) {
+  const Outcome r = run("--quiet --study 1:5 --max-seconds 0.001 --study-output st --plots none --json st_report.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const nlohmann::json j = report("st.json");
+  const std::string stopped = j["study"]["stopped"].get<std::string>();
+  EXPECT_EQ(stopped.rfind("time limit: ", 0), 0u) << stopped;
+  ASSERT_EQ(j["series"].size(), 1u);
+  ASSERT_EQ(j["series"][0]["levels"].size(), 1u);  // of the 5 asked for
+  EXPECT_EQ(j["series"][0]["levels"][0]["refine"].get<int>(), 1);
+  EXPECT_EQ(report("st_report.json")["study"]["stopped"], stopped);
+  std::ifstream csv(dir_ / "st.csv");
+  const std::string text((std::istreambuf_iterator<char>(csv)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2) << text;  // the header and level 1
+  const Outcome without = run("--quiet --max-seconds 5 --vtu none --json none");
+  EXPECT_EQ(without.code, 2);
+  EXPECT_EQ(without.err, "iga-poisson: error: --max-seconds requires --adaptive or --study\n");
+}
+
 TEST_F(IgaPoisson, AdaptiveNeedsALocallyRefinableBasis) {
   const Outcome r = run("--quiet --basis polyhedral --mesh " + std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj --adaptive 2");
   EXPECT_EQ(r.code, 1);
