@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "basis/boundary_overlap.hpp"
 #include "basis/fold_certificate.hpp"
 #include "core/error.hpp"
 
@@ -50,17 +51,25 @@ int degree(const Backend& backend, const BackendOptions& options) {
 }
 
 namespace {
-// Every geometry a program builds is proved not to fold where its elements have a polynomial form (a fold between
-// the points of a rule was solved with exit 0 before: issue 38).
+// Every geometry a program builds is proved not to fold where its elements have a polynomial form, and a planar
+// domain to be bounded by simple closed curves and covered once (folds between the points of a rule, slits and
+// self-overlapping nets were solved with exit 0 before: issue 38).
 Geometry certified(Geometry g) {
   if (const std::string why = fold_certificate(g); !why.empty()) throw NumericalError(why);
+  if (const std::string why = boundary_overlap(g); !why.empty()) throw InputError(why);
   return g;
+}
+// A planar net whose boundary polygon meets itself (a crack or slit: duplicated vertices, or two sides along the
+// same segment) is refused before any backend reads it.
+void refuse_cracks(const mesh::PolyMesh& net) {
+  if (const std::string why = net_boundary_overlap(net); !why.empty()) throw InputError(why);
 }
 }  // namespace
 
 Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
                        BackendFacts& facts) {
   if (net && !options.geometry.empty()) throw InputError("--geometry and --mesh exclude each other");
+  if (net) refuse_cracks(*net);
   if (!net && !backend.default_geometry) {
     throw InputError("--basis " + backend.name + " needs --mesh (a control net)");
   }
@@ -84,6 +93,7 @@ Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* n
                                  int steps, BackendFacts& facts) {
   if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
   if (!backend.nested && net && steps > 0 && backend.refine_net) {
+    refuse_cracks(*net);
     Geometry g = certified(backend.from_net(backend.refine_net(*net, steps, options, facts), options, facts));
     return {std::move(g), Eigen::SparseMatrix<double>(), false};
   }
