@@ -371,6 +371,15 @@ int run(const Options& o) {
   j["gmres_iterations"] = s.gmres_iterations;
   j["gmres_tolerance"] = o.gmres_tolerance;
   j["condition_estimate"] = s.condition_estimate;
+  if (s.pure_neumann) {  // the solvability ∫g = 0 (fem/compatibility.hpp): what was judged and what was done
+    const fem::Compatibility& c = s.compatibility;
+    j["compatibility"] = c.word();
+    j["compatibility_defect"] = c.defect();
+    j["compatibility_relative"] = c.relative();
+    j["compatibility_integrals"] = {{"neumann", c.finer.neumann}, {"neumann_abs", c.finer.neumann_abs},
+                                    {"quadrature_error", c.quadrature_error()}};
+    if (c.verdict() == fem::Compatibility::Verdict::kWarned) std::cerr << "iga-bem: warning: " << c.warning() << std::endl;
+  }
   j["flux_l2_error"] = nullptr;
   j["u_l2_error"] = nullptr;
   j["max_interior_error"] = nullptr;

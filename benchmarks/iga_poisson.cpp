@@ -259,7 +259,16 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["neumann_edges"] = r.neumann_edges;
   j["mean_zero"] = r.mean_zero;
   j["nitsche_penalty"] = r.nitsche_penalty > 0.0 ? nlohmann::json(r.nitsche_penalty) : nlohmann::json(nullptr);
-  if (r.mean_zero) j["compatibility_defect"] = r.compatibility_defect;
+  if (r.mean_zero) {
+    // The pure-Neumann data's solvability ∫f + ∫g = 0 (fem/compatibility.hpp): what was judged and what was done.
+    const iga::fem::Compatibility& c = r.compatibility;
+    j["compatibility_defect"] = r.compatibility_defect;
+    j["compatibility"] = c.word();
+    j["compatibility_relative"] = c.relative();
+    j["compatibility_integrals"] = {{"source", c.finer.source}, {"neumann", c.finer.neumann},
+                                    {"source_abs", c.finer.source_abs}, {"neumann_abs", c.finer.neumann_abs},
+                                    {"quadrature_error", c.quadrature_error()}};
+  }
   j["l2_error"] = nullptr;
   j["h1_error"] = nullptr;
   if (r.errors) {
@@ -331,6 +340,9 @@ nlohmann::json solve_run(const Options& o) {
     });
   } else {
     r = solve_in_phases(geometry, *rules, problem, solver, progress);
+  }
+  if (r.mean_zero && r.compatibility.verdict() == fem::Compatibility::Verdict::kWarned && fem::rank() == 0) {
+    std::cerr << "iga-poisson: warning: " << r.compatibility.warning() << std::endl;
   }
   log("assembly " + fmt(r.assembly_seconds) + " s, solve " + fmt(r.solve_seconds) + " s (" + r.solver + ")");
   report_results(j, r, rules->name(), solver);
