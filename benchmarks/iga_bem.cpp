@@ -24,6 +24,7 @@
 #include "fem/poisson.hpp"
 #include "fem/threads.hpp"
 #include "io/program.hpp"
+#include "io/option_rules.hpp"
 #include "io/progress.hpp"
 #include "io/report.hpp"
 #include "io/sampled_writer.hpp"
@@ -489,6 +490,7 @@ int main(int argc, char** argv) {
   io::CommonOptions common{"iga-bem"};
   io::add_common_options(app, common);
   if (const auto code = io::parse_command_line(app, argc, argv, common)) return *code;
+  if (const auto code = io::check_option_rules(app, common.program)) return *code;
   o.quiet = common.quiet;
   o.run_info = io::run_info(app, common.program);
   if (app.count("--geometry") > 0) o.given.emplace_back("geometry");
