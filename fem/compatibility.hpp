@@ -17,7 +17,7 @@ struct DataIntegrals {
 /// quadrature terms in double precision stay below it.
 inline constexpr double kCompatibilityRoundoff = 1e-12;
 /// Beyond round-off but at most this times ∫|f| + ∫|g|: a small defect, removed with a warning; above it the
-/// problem is refused. Compatible smooth data measured at most 1e-13 of the scale by the finer rules once the
+/// problem is refused. Compatible smooth data measured at most 3.3e-13 of the scale by the finer rules once the
 /// mesh resolves them (README, "Pure-Neumann problems"); the margin of 1e4 covers data known to ~8 digits.
 inline constexpr double kCompatibilityTolerance = 1e-8;
 

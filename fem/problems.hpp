@@ -37,8 +37,8 @@ void check_problem_domain(const ManufacturedProblem& problem, const basis::Geome
 
 /// Names: "sine" (sin(πx) sin(πy)), "harmonic" (e^x sin y), "linear" (1 + 2x - 3y, the patch test),
 /// "poly" (x²y + y³ - xy), "corner" (r^(2/3) sin(2φ/3) about the reflex corner (1,1) of the L-shape of
-/// basis::bspline::make_l_shape and data/meshes/l_shape.obj, harmonic; its gradient, singular at the corner, is
-/// returned as 0 there). InputError for an unknown name, listing the known ones.
+/// basis::bspline::make_l_shape, harmonic; its gradient, singular at the corner, is
+/// returned as 0 there; its domain: the L-shape, check_problem_domain). InputError for an unknown name, listing the known ones.
 ManufacturedProblem manufactured_problem(const std::string& name, double reaction = 0.0);
 std::vector<std::string> manufactured_problem_names();
 
