@@ -59,8 +59,6 @@ inline const std::vector<OptionRule>& option_rules() {
       {K::kNoEffect, "--vtu-degree", "--vtu-format", {"linear"},
        "it is the degree of the Bézier cells of --vtu-format bezier", {"iga-biharmonic", "iga-poisson"},
        "--vtu out.vtu --vtu-format linear --vtu-degree 4"},
-      {K::kNoEffect, "--plots", "--study-output", {"none"}, "no study files are written", {"iga-poisson"},
-       "--study 0:2 --study-output none --plots png"},
       {K::kNoEffect, "--gmres-tolerance", "--solver", {"lu"}, "LU solves directly", {"iga-bem"},
        "--solver lu --gmres-tolerance 1e-10"},
       {K::kRequires, "--max-seconds", "--grid", {}, "", {"iga-bem"}, "--max-seconds 10"},
