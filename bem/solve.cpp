@@ -37,6 +37,27 @@ void boundary_weights(const BoundaryDiscretization& d, const fem::Function* f, E
   }
 }
 
+// ∫_Γ g dΓ and ∫_Γ |g| dΓ of Neumann data over the Neumann dofs' elements (user units), Gauss with `points` per
+// BEM element: the solvability condition of the pure-Neumann problem (fem/compatibility.hpp).
+fem::DataIntegrals neumann_integrals(const BoundaryDiscretization& d, const fem::BoundaryFunction& g, int points) {
+  const quadrature::Rule1D rule = quadrature::gauss_legendre(points);
+  fem::DataIntegrals out;
+  basis::CurvePoints pts;
+  Eigen::VectorXd gv;
+  for (Index e = 0; e < d.num_elements(); ++e) {
+    const BemElement& el = d.element(e);
+    d.curve().evaluate(el.curve_element, (el.a + (el.b - el.a) * rule.points.array()).matrix(), pts);
+    const Eigen::VectorXd ws = ((el.b - el.a) * rule.weights.array() * pts.speed.array()).matrix();
+    Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Zero(3, pts.x.cols()), n = Eigen::Matrix3Xd::Zero(3, pts.x.cols());
+    x.topRows<2>() = pts.x;
+    n.topRows<2>() = pts.normal;
+    g.values(x, n, gv);
+    out.neumann += gv.dot(ws);
+    out.neumann_abs += gv.cwiseAbs().dot(ws);
+  }
+  return out;
+}
+
 struct LinearResult {
   Eigen::VectorXd x;
   double condition = 0.0;
@@ -126,6 +147,15 @@ Solution solve(const BoundaryDiscretization& d, const Problem& problem, const So
   for (int c : d.dof_conditions()) (c == kDirichlet ? has_d : has_n) = true;
   if (has_d && !problem.dirichlet) throw InputError("bem solve: Dirichlet segments but no Dirichlet data");
   if (has_n && !problem.neumann) throw InputError("bem solve: Neumann segments but no Neumann data");
+  fem::Compatibility compatibility;
+  if (!has_d) {  // pure Neumann: ∫g = 0 by the border's rule (p + 4 points) and a finer one (p + 6)
+    compatibility.has_source = false;
+    compatibility.assembly = neumann_integrals(d, *problem.neumann, d.space().degree() + 4);
+    compatibility.finer = neumann_integrals(d, *problem.neumann, d.space().degree() + 6);
+    if (!options.remove_incompatible) {
+      fem::check_compatibility(compatibility, "make the data compatible, or give a Dirichlet part");
+    }
+  }
   // Data at the collocation points, then the known coefficients (q in internal units: q_user / scale).
   Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Zero(3, n), normal = Eigen::Matrix3Xd::Zero(3, n);
   basis::CurvePoints pts;
@@ -176,6 +206,8 @@ Solution solve(const BoundaryDiscretization& d, const Problem& problem, const So
   s.gmres_iterations = r.iterations;
   s.solver = r.solver;
   s.collocation_points = n;
+  s.pure_neumann = !has_d;
+  s.compatibility = compatibility;
   return s;
 }
 

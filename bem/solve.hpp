@@ -15,6 +15,7 @@
 
 #include "bem/assembly.hpp"
 #include "bem/boundary_discretization.hpp"
+#include "fem/compatibility.hpp"
 #include "fem/function.hpp"
 
 namespace iga::bem {
@@ -34,6 +35,9 @@ struct SolveOptions {
   /// near field of each collocation point); 0 = none.
   Index gmres_block = 64;
   Index lu_limit = 4000;  ///< Auto: LU up to this many unknowns, GMRES above
+  /// Pure Neumann: data whose ∫g is not zero within fem::kCompatibilityTolerance of ∫|g| are refused
+  /// (InputError) unless this is set; the border's λ then absorbs the defect.
+  bool remove_incompatible = false;
 };
 
 struct Solution {
@@ -47,10 +51,12 @@ struct Solution {
   int gmres_iterations = 0;
   std::string solver;  ///< "lu" or "gmres"
   Index collocation_points = 0;
+  bool pure_neumann = false;           ///< no Dirichlet dof: the bordered system
+  fem::Compatibility compatibility;    ///< pure Neumann: ∫g and ∫|g| and the verdict
 };
 
 /// Assembles H and G and solves. InputError when Dirichlet dofs exist and problem.dirichlet is missing, or
-/// Neumann dofs and problem.neumann; NumericalError on a non-finite result or a GMRES run that does not
+/// Neumann dofs and problem.neumann, or (pure Neumann) for data with ∫g ≠ 0 (fem::check_compatibility); NumericalError on a non-finite result or a GMRES run that does not
 /// reach the tolerance.
 Solution solve(const BoundaryDiscretization& d, const Problem& problem, const SolveOptions& options = {});
 

@@ -24,6 +24,7 @@
 #include "fem/poisson.hpp"
 #include "fem/threads.hpp"
 #include "io/program.hpp"
+#include "io/option_rules.hpp"
 #include "io/progress.hpp"
 #include "io/report.hpp"
 #include "io/sampled_writer.hpp"
@@ -371,6 +372,15 @@ int run(const Options& o) {
   j["gmres_iterations"] = s.gmres_iterations;
   j["gmres_tolerance"] = o.gmres_tolerance;
   j["condition_estimate"] = s.condition_estimate;
+  if (s.pure_neumann) {  // the solvability ∫g = 0 (fem/compatibility.hpp): what was judged and what was done
+    const fem::Compatibility& c = s.compatibility;
+    j["compatibility"] = c.word();
+    j["compatibility_defect"] = c.defect();
+    j["compatibility_relative"] = c.relative();
+    j["compatibility_integrals"] = {{"neumann", c.finer.neumann}, {"neumann_abs", c.finer.neumann_abs},
+                                    {"quadrature_error", c.quadrature_error()}};
+    if (c.verdict() == fem::Compatibility::Verdict::kWarned) std::cerr << "iga-bem: warning: " << c.warning() << std::endl;
+  }
   j["flux_l2_error"] = nullptr;
   j["u_l2_error"] = nullptr;
   j["max_interior_error"] = nullptr;
@@ -480,6 +490,7 @@ int main(int argc, char** argv) {
   io::CommonOptions common{"iga-bem"};
   io::add_common_options(app, common);
   if (const auto code = io::parse_command_line(app, argc, argv, common)) return *code;
+  if (const auto code = io::check_option_rules(app, common.program)) return *code;
   o.quiet = common.quiet;
   o.run_info = io::run_info(app, common.program);
   if (app.count("--geometry") > 0) o.given.emplace_back("geometry");

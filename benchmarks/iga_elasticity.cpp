@@ -13,6 +13,7 @@
 #include "io/discretisation_options.hpp"
 #include "io/problem_run.hpp"
 #include "io/program.hpp"
+#include "io/option_rules.hpp"
 #include "io/report.hpp"
 #include "io/vtk_file.hpp"
 #include "io/vtu_writer.hpp"
@@ -108,6 +109,7 @@ int main(int argc, char** argv) {
   iga::io::CommonOptions common{"iga-elasticity"};
   iga::io::add_common_options(app, common);
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  if (const auto code = iga::io::check_option_rules(app, common.program)) return *code;
   o.run.quiet = common.quiet;
   o.run.run_info = iga::io::run_info(app, common.program);
   iga::io::record_given_options(app, o.run.discretisation);

@@ -25,6 +25,7 @@
 #include "io/forecast.hpp"
 #include "io/program.hpp"
 #include "io/net_writer.hpp"
+#include "io/option_rules.hpp"
 #include "io/problem_run.hpp"
 #include "io/progress.hpp"
 #include "io/report.hpp"
@@ -127,6 +128,7 @@ iga::fem::PoissonProblem make_problem(const Options& o, const iga::basis::Geomet
   if (!problem_name.empty()) {
     if (geometry.dim() == 3) throw UnsupportedError("--problem " + problem_name + ": built-in problems are for planar domains; give --source and --exact for surfaces");
     const fem::ManufacturedProblem mp = fem::manufactured_problem(problem_name, o.reaction);
+    fem::check_problem_domain(mp, geometry, "--problem " + problem_name);
     problem.source = mp.source;
     problem.exact = mp.exact;
     problem.dirichlet = mp.exact;
@@ -290,7 +292,16 @@ void report_results(nlohmann::json& j, const iga::fem::PoissonResult& r, const s
   j["neumann_edges"] = r.neumann_edges;
   j["mean_zero"] = r.mean_zero;
   j["nitsche_penalty"] = r.nitsche_penalty > 0.0 ? nlohmann::json(r.nitsche_penalty) : nlohmann::json(nullptr);
-  if (r.mean_zero) j["compatibility_defect"] = r.compatibility_defect;
+  if (r.mean_zero) {
+    // The pure-Neumann data's solvability ∫f + ∫g = 0 (fem/compatibility.hpp): what was judged and what was done.
+    const iga::fem::Compatibility& c = r.compatibility;
+    j["compatibility_defect"] = r.compatibility_defect;
+    j["compatibility"] = c.word();
+    j["compatibility_relative"] = c.relative();
+    j["compatibility_integrals"] = {{"source", c.finer.source}, {"neumann", c.finer.neumann},
+                                    {"source_abs", c.finer.source_abs}, {"neumann_abs", c.finer.neumann_abs},
+                                    {"quadrature_error", c.quadrature_error()}};
+  }
   j["l2_error"] = nullptr;
   j["h1_error"] = nullptr;
   if (r.errors) {
@@ -363,6 +374,9 @@ nlohmann::json solve_run(const Options& o) {
     });
   } else {
     r = solve_in_phases(geometry, *rules, problem, solver, progress);
+  }
+  if (r.mean_zero && r.compatibility.verdict() == fem::Compatibility::Verdict::kWarned && fem::rank() == 0) {
+    std::cerr << "iga-poisson: warning: " << r.compatibility.warning() << std::endl;
   }
   log("assembly " + fmt(r.assembly_seconds) + " s, solve " + fmt(r.solve_seconds) + " s (" + r.solver + ")");
   report_results(j, r, rules->name(), solver);
@@ -447,15 +461,11 @@ int main(int argc, char** argv) {
   CLI::App app{"iga-poisson: solve -Δu + c u = f (Laplace–Beltrami on surfaces) with isogeometric elements"};
   Options o;
   iga::io::add_discretisation_options(app, o.d);
-  auto* adaptive_option = app.add_option("--adaptive", o.adaptive, "adaptive refinement: STEPS rounds of solve, estimate (residual estimator), mark, refine locally (bspline: THB; the --refine steps come first); one .vtu per step plus a .pvd series")->check(iga::io::whole_number(0, 200));
-  app.add_option("--theta", o.theta, "--adaptive: marking parameter in (0, 1]")->check(iga::io::finite_number(1e-6, 1.0))->capture_default_str()
-      ->needs(adaptive_option);
-  app.add_option("--mark", o.mark, "--adaptive: doerfler (bulk) or max")->check(CLI::IsMember({"doerfler", "max"}))->capture_default_str()
-      ->needs(adaptive_option);
-  app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(iga::io::whole_number(0, 1000000000000LL))
-      ->needs(adaptive_option);
-  app.add_option("--admissibility", o.admissibility, "--adaptive: class m of admissible meshes (>= 2; 0 refines exactly the marked elements)")->check(CLI::IsMember({0, 2, 3, 4, 5, 6}))->capture_default_str()
-      ->needs(adaptive_option);
+  app.add_option("--adaptive", o.adaptive, "adaptive refinement: STEPS rounds of solve, estimate (residual estimator), mark, refine locally (bspline: THB; the --refine steps come first); one .vtu per step plus a .pvd series")->check(iga::io::whole_number(0, 200));
+  app.add_option("--theta", o.theta, "--adaptive: marking parameter in (0, 1]")->check(iga::io::finite_number(1e-6, 1.0))->capture_default_str();
+  app.add_option("--mark", o.mark, "--adaptive: doerfler (bulk) or max")->check(CLI::IsMember({"doerfler", "max"}))->capture_default_str();
+  app.add_option("--max-dofs", o.max_dofs, "--adaptive: stop after the first solve with at least this many dofs (0: no limit)")->check(iga::io::whole_number(0, 1000000000000LL));
+  app.add_option("--admissibility", o.admissibility, "--adaptive: class m of admissible meshes (>= 2; 0 refines exactly the marked elements)")->check(CLI::IsMember({0, 2, 3, 4, 5, 6}))->capture_default_str();
   std::string names;
   for (const auto& n : iga::fem::manufactured_problem_names()) names += (names.empty() ? "" : ", ") + n;
   app.add_option("--problem", o.problem, "built-in manufactured problem (" + names + "); default sine when no --source/--exact")->check(iga::io::non_blank());
@@ -480,28 +490,23 @@ int main(int argc, char** argv) {
   app.add_option("--json", o.json, "JSON report file ('none' to skip)")->capture_default_str();
   app.add_option("--max-seconds", o.max_seconds, "--adaptive and --study: a time limit in seconds (default 0: none); before each step (level) its time is predicted from the steps done, and one predicted to end past the limit is not started: the report and output are those of the last complete step, the report's \"stopped\" and one line on stderr say why (exit 0)")->check(iga::io::finite_number(0.0, 1e9))->capture_default_str();
   app.add_option("--max-memory", o.max_memory, "GiB this run may use (default: what the system has available); a run predicted to need more is refused before it starts")->check(iga::io::finite_number(0.001, 1e6));
-  auto* study_option = app.add_option("--study", o.study, "convergence study over refinement levels K0:K1 (at least 3), each solved in this process: a table with rates on stderr, PREFIX.csv, PREFIX.json, plots; with --vtu a .vtu per level and a .pvd")
-      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_levels(t); }, "K0:K1"))
-      ->excludes(app.get_option("--refine"))->excludes(app.get_option("--adaptive"));
+  app.add_option("--study", o.study, "convergence study over refinement levels K0:K1 (at least 3), each solved in this process: a table with rates on stderr, PREFIX.csv, PREFIX.json, plots; with --vtu a .vtu per level and a .pvd")
+      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_levels(t); }, "K0:K1"));
   app.add_option("--degrees", o.degrees, "--study, bspline: one series per degree, e.g. 2,3,4")
-      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_degrees(t); }, "P,P,..."))
-      ->needs(study_option)->excludes(app.get_option("--degree"));
+      ->check(CLI::Validator([](std::string& t) { return iga::bench::check_degrees(t); }, "P,P,..."));
   app.add_option("--study-output", o.study_output, "--study: PREFIX of PREFIX.csv, PREFIX.json and the plots PREFIX_dofs.png/.svg, PREFIX_seconds.png/.svg ('none': no files)")
-      ->check(iga::io::non_blank())->needs(study_option)->capture_default_str();
+      ->check(iga::io::non_blank())->capture_default_str();
   app.add_option("--plots", o.plots, "--study: plot formats png,svg, png or svg (matplotlib, through /usr/bin/python3), or none")
       ->check(CLI::Validator(
           [](std::string& t) {
             return t == "png,svg" || t == "png" || t == "svg" || t == "none" ? std::string() : "'" + t + "' is not png,svg, png, svg or none";
           },
           "png,svg|png|svg|none"))
-      ->needs(study_option)->capture_default_str();
+      ->capture_default_str();
   iga::io::CommonOptions common{"iga-poisson"};
   iga::io::add_common_options(app, common);
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
-  if (app.count("--max-seconds") > 0 && o.adaptive < 0 && o.study.empty()) {
-    std::cerr << "iga-poisson: error: --max-seconds requires --adaptive or --study" << std::endl;
-    return 2;
-  }
+  if (const auto code = iga::io::check_option_rules(app, common.program)) return *code;
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
   iga::io::record_given_options(app, o.d);

@@ -1,6 +1,7 @@
 #include "fem/poisson.hpp"
 
 #include <sstream>
+#include <span>
 
 #include "fem/expression.hpp"
 
@@ -66,6 +67,44 @@ DirichletMethod dirichlet_method(const std::string& word) {
 }
 
 namespace {
+
+// |g| of a Neumann datum, for the scale of its integral.
+class AbsBoundaryFunction final : public BoundaryFunction {
+ public:
+  explicit AbsBoundaryFunction(std::shared_ptr<const BoundaryFunction> g) : g_(std::move(g)) {}
+  void values(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& n, Eigen::VectorXd& out) const override {
+    g_->values(x, n, out);
+    out = out.cwiseAbs();
+  }
+
+ private:
+  std::shared_ptr<const BoundaryFunction> g_;
+};
+
+// ∫f, ∫|f| over the domain and ∫g, ∫|g| over the Neumann edges by the rules of `by` (every element, on every process).
+DataIntegrals data_integrals(const Assembler& by, const std::shared_ptr<const Function>& f,
+                             const std::shared_ptr<const BoundaryFunction>& g, std::span<const basis::BoundaryEdge> edges) {
+  DataIntegrals d;
+  if (f) {
+    const Eigen::VectorXd s = by.integrate(2, [&](const ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+      Eigen::VectorXd v;
+      f->values(ctx.geo.x, v);
+      out(0) = v.dot(ctx.weight);
+      out(1) = v.cwiseAbs().dot(ctx.weight);
+    });
+    d.source = s(0);
+    d.source_abs = s(1);
+  }
+  if (g && !edges.empty()) {
+    Eigen::VectorXd b;
+    const BoundaryLoadForm flux(g), magnitude(std::make_shared<AbsBoundaryFunction>(g));
+    by.assemble_boundary(edges, nullptr, &flux, nullptr, &b);
+    d.neumann = b.sum();
+    by.assemble_boundary(edges, nullptr, &magnitude, nullptr, &b);
+    d.neumann_abs = b.sum();
+  }
+  return d;
+}
 
 // −Δu + c u = f as a fem::Problem: Poisson's pieces for the one pipeline (fem/problem.hpp).
 class PoissonPde final : public Problem {
@@ -133,6 +172,7 @@ class PoissonPde final : public Problem {
       assembler.assemble({}, lf, unused, ones_load_);
       measure_ = ones_load_.sum();
       defect_ = system.load_sum();
+      check_data(assembler);
       system.add(none, (-defect_ / measure_) * ones_load_);
     }
   }
@@ -196,8 +236,22 @@ class PoissonPde final : public Problem {
   bool singular() const { return singular_; }
   double penalty() const { return penalty_; }
   double defect() const { return defect_; }
+  const Compatibility& compatibility() const { return compatibility_; }
 
  private:
+  // The solvability condition ∫f + ∫g = 0, by the assembly's rules and by the finer error rules: refused beyond
+  // the tolerance unless the problem asks for the defect to be removed.
+  void check_data(const Assembler& assembler) const {
+    const std::unique_ptr<quadrature::RuleProvider> finer = assembler.rules().error_rules();
+    compatibility_.assembly = data_integrals(assembler, p_.source, p_.neumann, neumann_);
+    compatibility_.finer = finer ? data_integrals(Assembler(assembler.geometry(), *finer), p_.source, p_.neumann, neumann_)
+                                 : compatibility_.assembly;
+    if (p_.remove_incompatible) return;
+    check_compatibility(compatibility_, assembler.geometry().space().boundary_edges().empty()
+                                            ? "make the data compatible, or give a reaction term c > 0"
+                                            : "make the data compatible, or give a Dirichlet part or a reaction term c > 0");
+  }
+
   std::shared_ptr<const Function> dirichlet_data() const {
     return p_.dirichlet ? p_.dirichlet : constant_function(0.0);
   }
@@ -211,6 +265,7 @@ class PoissonPde final : public Problem {
   mutable bool singular_ = false;
   mutable Eigen::VectorXd ones_load_;  // m_i = ∫ φ_i, for the mean-zero constraint
   mutable double measure_ = 0.0, defect_ = 0.0, penalty_ = 0.0;
+  mutable Compatibility compatibility_;
 };
 
 }  // namespace
@@ -259,6 +314,7 @@ void PoissonSolver::assemble() {
   r_.nitsche_penalty = sys_->pde->penalty();
   r_.mean_zero = singular_;
   r_.compatibility_defect = sys_->pde->defect();
+  r_.compatibility = sys_->pde->compatibility();
   r_.dirichlet_dofs = p.constrained_dofs;
   r_.assembly_seconds = p.assembly_seconds;
   done_ = 2;

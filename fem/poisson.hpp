@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "basis/geometry.hpp"
+#include "fem/compatibility.hpp"
 #include "fem/errors.hpp"
 #include "fem/function.hpp"
 #include "fem/solver.hpp"
@@ -34,6 +35,10 @@ struct PoissonProblem {
   /// to a constant: with mean_zero the solution with ∫u = 0 is returned (the load is made compatible by
   /// removing its mean, reported as compatibility_defect; error norms compare with exact - mean(exact)).
   bool mean_zero = false;
+  /// Pure-Neumann data must satisfy ∫f + ∫g = 0 (fem/compatibility.hpp): a defect beyond kCompatibilityTolerance
+  /// of ∫|f| + ∫|g| is refused (InputError naming both integrals) unless this is set, which removes any defect
+  /// (for data known to belong to a nearby domain, e.g. a sphere's source on its Catmull–Clark surface).
+  bool remove_incompatible = false;
   DirichletMethod dirichlet_method = DirichletMethod::kStrong;
   /// Nitsche's penalty: γ > 0 gives β = γ / h on every side (h its length); 0 (default) gives β_K from each
   /// element's local eigenvalue estimate (fem/nitsche.hpp), which is coercive by construction. A fixed γ that
@@ -64,6 +69,7 @@ struct PoissonResult {
   double nitsche_penalty = 0.0;     ///< the γ used, or max_K β_K h_K of the local estimate (Nitsche only)
   bool mean_zero = false;           ///< the mean-zero constraint was applied
   double compatibility_defect = 0;  ///< ∫f + ∫g_N before it was removed (mean_zero only)
+  Compatibility compatibility;      ///< the data's integrals and verdict (mean_zero only)
 };
 
 /// The boundary edges of a geometry split by the problem's selection (neumann_parts, neumann_where): the one

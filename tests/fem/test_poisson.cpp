@@ -155,6 +155,7 @@ TEST(Poisson, MeanZeroSolutionOfThePureNeumannProblem) {
   p.neumann_parts = {0, 1, 2, 3};
   EXPECT_THROW(fem::solve_poisson(basis::bspline::make_rectangle(2), quadrature::Gauss(3), p), InputError);
   p.mean_zero = true;
+  p.remove_incompatible = true;  // the defect 0.3 is deliberate (refused without this: PureNeumann tests below)
   std::vector<double> l2;
   for (int level = 2; level <= 5; ++level) {
     const basis::Geometry g = refine::refine_uniform(basis::bspline::make_rectangle(2), level).geometry;
@@ -164,6 +165,75 @@ TEST(Poisson, MeanZeroSolutionOfThePureNeumannProblem) {
     l2.push_back(r.errors->l2);
   }
   EXPECT_GE(fitted_rate(l2), 2.8);
+}
+
+// Pure Neumann, issue 38: f = 2π² cos πx cos πy + c on the unit square with g = 0 (the exact flux of
+// cos πx cos πy), ∫f = c, ∫|f| + ∫|g| = 8 (for c = 0).
+fem::PoissonProblem pure_neumann(double c) {
+  const double pi = std::acos(-1.0);
+  fem::PoissonProblem p;
+  p.source = fem::make_function([pi, c](const Eigen::Vector3d& x) {
+    return 2 * pi * pi * std::cos(pi * x(0)) * std::cos(pi * x(1)) + c;
+  });
+  p.neumann = std::make_shared<fem::Expression>("0", "--neumann", true);
+  p.neumann_parts = {0, 1, 2, 3};
+  p.mean_zero = true;
+  return p;
+}
+
+// Compatible data: "exact", no warning, and the solution the removal gives (the behaviour before the check).
+TEST(PureNeumann, CompatibleDataAreSolvedAsBefore) {
+  const basis::Geometry g = refine::refine_uniform(basis::bspline::make_rectangle(2), 4).geometry;
+  const fem::PoissonResult r = fem::solve_poisson(g, quadrature::Gauss(3), pure_neumann(0.0));
+  EXPECT_EQ(r.compatibility.verdict(), fem::Compatibility::Verdict::kExact);
+  EXPECT_EQ(r.compatibility.word(), "exact");
+  EXPECT_LE(r.compatibility.relative(), fem::kCompatibilityRoundoff);
+  EXPECT_NEAR(r.compatibility.scale(), 8.0, 1e-6);
+  fem::PoissonProblem removed = pure_neumann(0.0);
+  removed.remove_incompatible = true;
+  const fem::PoissonResult before = fem::solve_poisson(g, quadrature::Gauss(3), removed);
+  EXPECT_EQ(r.u, before.u);
+  EXPECT_EQ(r.compatibility_defect, before.compatibility_defect);
+}
+
+// A defect of 1e-9 (1.25e-10 of the scale): solved with a warning that names the relative defect.
+TEST(PureNeumann, SmallDefectIsRemovedWithAWarning) {
+  const basis::Geometry g = refine::refine_uniform(basis::bspline::make_rectangle(2), 4).geometry;
+  const fem::PoissonResult r = fem::solve_poisson(g, quadrature::Gauss(3), pure_neumann(1e-9));
+  EXPECT_EQ(r.compatibility.verdict(), fem::Compatibility::Verdict::kWarned);
+  EXPECT_EQ(r.compatibility.word(), "small defect removed (warned)");
+  EXPECT_NEAR(r.compatibility.defect(), 1e-9, 1e-13);
+  EXPECT_EQ(r.compatibility.warning(),
+            "the Neumann data are compatible only to 1.25e-10 of ∫|f| + ∫|g| (∫f + ∫g = 1e-9); solved with the defect removed");
+}
+
+// A defect of 0.3: refused, naming both integrals; the programs' remedy words.
+TEST(PureNeumann, LargeDefectIsRefused) {
+  const basis::Geometry g = refine::refine_uniform(basis::bspline::make_rectangle(2), 3).geometry;
+  try {
+    fem::solve_poisson(g, quadrature::Gauss(3), pure_neumann(0.3));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "the Neumann problem has no solution: ∫f + ∫g = 0.3 (∫f = 0.3, ∫g = 0), not zero within 1e-8 of "
+              "∫|f| + ∫|g| = 8.00525; make the data compatible, or give a Dirichlet part or a reaction term c > 0");
+  }
+}
+
+// The verdict's bands: round-off, the quadrature's error, the warning band, refusal.
+TEST(PureNeumann, VerdictBands) {
+  fem::Compatibility c;
+  auto with = [&c](double defect, double assembly_defect) {
+    c.finer = {1.0 + defect, -1.0, 1.0, 1.0};  // scale 2
+    c.assembly = {1.0 + assembly_defect, -1.0, 1.0, 1.0};
+    return c.verdict();
+  };
+  using V = fem::Compatibility::Verdict;
+  EXPECT_EQ(with(1e-12, 1e-12), V::kExact);
+  EXPECT_EQ(with(1e-6, 2e-6), V::kQuadrature);  // 100 × the rules' difference covers it
+  EXPECT_EQ(with(1e-8, 1e-8), V::kWarned);
+  EXPECT_EQ(with(1e-7, 1e-7), V::kRefused);
+  EXPECT_EQ(with(1e-7, 1e-7 + 1e-8), V::kQuadrature);
 }
 
 // Selecting Neumann edges by an expression at their midpoints equals selecting the part.
