@@ -31,6 +31,7 @@ std::string expected_start(const iga::io::OptionRule& r, const std::string& prog
     case K::kRequires: return head + "requires " + r.other;
     case K::kExcludes: return head + "excludes " + r.other;
     case K::kNoEffect: return head + "has no effect with " + r.other + " ";
+    case K::kRequiresOneOf: return head + "requires " + r.values.front() + " or ";  // two alternatives here
   }
   return head;
 }
