@@ -12,6 +12,7 @@
 #include <iomanip>
 
 #include "core/error.hpp"
+#include "fem/data_check.hpp"
 #include "fem/parallel_for.hpp"
 
 namespace iga::fem {
@@ -209,6 +210,10 @@ AssemblyStats Assembler::assemble(std::span<const BilinearForm* const> bilinear,
       sink.add(i, dofs, k, f);
     });
     sink.end_colour(static_cast<Index>(taken.size()));
+  }
+  // After the loop, so that a value the quadrature points themselves find not finite is named as before.
+  for (const FormNeeds* form : forms) {
+    for (const Function* f : form->data()) check_domain_data(geometry_, *f);
   }
   AssemblyStats stats;
   for (Index e = 0; e < ne; ++e) {

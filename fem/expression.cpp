@@ -20,6 +20,7 @@ struct Expression::Evaluator {
   double x = 0, y = 0, z = 0, nx = 0, ny = 0, nz = 0;
   mu::Parser parser;
   std::vector<mu::Parser> derivatives;  // made on first use: ∂x, ∂y, ∂z, xx, xy, yy, xz, yz, zz
+  std::vector<mu::Parser> singular;     // made on first use: the singular factors
 
   Evaluator(const std::string& text, bool allow_normal) { define(parser, text, allow_normal); }
 
@@ -38,12 +39,13 @@ struct Expression::Evaluator {
     }
     p.SetExpr(text);
   }
-  mu::Parser& derivative(const std::vector<std::string>& texts, std::size_t i) {
-    if (derivatives.empty()) {
-      derivatives.resize(texts.size());
-      for (std::size_t k = 0; k < texts.size(); ++k) define(derivatives[k], texts[k], false);
+  mu::Parser& derivative(const std::vector<std::string>& texts, std::size_t i) { return made(derivatives, texts, i); }
+  mu::Parser& made(std::vector<mu::Parser>& parsers, const std::vector<std::string>& texts, std::size_t i) {
+    if (parsers.empty()) {
+      parsers.resize(texts.size());
+      for (std::size_t k = 0; k < texts.size(); ++k) define(parsers[k], texts[k], false);
     }
-    return derivatives[i];
+    return parsers[i];
   }
   void at(const Eigen::Matrix3Xd& p, Eigen::Index k) {
     x = p(0, k);
@@ -174,6 +176,14 @@ void Expression::differentiate() {
       return;
     }
     for (const std::string& t : texts) Evaluator check(t, false);  // muparser reads each derivative
+    for (std::size_t i = 0; i < d->singular.size(); ++i) {  // and each singular factor it can (others are left out)
+      try {
+        Evaluator check(d->singular[i], false);
+        singular_.push_back(d->singular[i]);
+        singular_names_.push_back(d->singular_names[i]);
+      } catch (const mu::Parser::exception_type&) {
+      }
+    }
   } catch (const mu::Parser::exception_type& e) {
     not_symbolic_ = "muparser: " + e.GetMsg();
     return;
@@ -224,7 +234,22 @@ Expression::Evaluator& Expression::evaluator() const {
   return *slot;
 }
 
+void Expression::singular_factors(const Eigen::Matrix3Xd& x, Eigen::MatrixXd& out) const {
+  out.resize(static_cast<Eigen::Index>(singular_.size()), x.cols());
+  if (singular_.empty()) return;
+  Evaluator& ev = evaluator();
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    ev.at(x, k);
+    for (std::size_t i = 0; i < singular_.size(); ++i) out(static_cast<Eigen::Index>(i), k) = ev.made(ev.singular, singular_, i).Eval();
+  }
+}
+
 void Expression::values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const {
+  values_unchecked(x, out);
+  check_finite(x, out);
+}
+
+void Expression::values_unchecked(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const {
   Evaluator& ev = evaluator();
   out.resize(x.cols());
   for (Eigen::Index k = 0; k < x.cols(); ++k) {
@@ -233,7 +258,6 @@ void Expression::values(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const {
     ev.z = x(2, k);
     out(k) = ev.parser.Eval();
   }
-  check_finite(x, out);
 }
 
 void Expression::values(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& n, Eigen::VectorXd& out) const {

@@ -34,6 +34,15 @@ class Expression final : public Function, public BoundaryFunction {
   std::string derivative_method(int order) const override;
   /// The derivatives' texts (empty when not symbolic): ∂x, ∂y, ∂z, then xx, xy, yy, xz, yz, zz.
   const std::vector<std::string>& derivative_texts() const { return derivatives_; }
+  /// The option and the quoted text, as in messages: "--source", "'1/x'" (cut at 60 characters).
+  const std::string& what() const { return what_; }
+  const std::string& quoted() const { return quoted_; }
+  /// The values at the points without the finiteness check (NaN and ±inf as they come; for fem/data_check.hpp).
+  void values_unchecked(const Eigen::Matrix3Xd& x, Eigen::VectorXd& out) const;
+  /// Where the expression may be singular (symbolic only; SymbolicDerivatives::singular): each factor named
+  /// ("the denominator -3/10+x"), and their values at the points (one row per factor).
+  const std::vector<std::string>& singular_factor_names() const { return singular_names_; }
+  void singular_factors(const Eigen::Matrix3Xd& x, Eigen::MatrixXd& out) const;
 
  private:
   struct Evaluator;
@@ -45,6 +54,7 @@ class Expression final : public Function, public BoundaryFunction {
   bool symbolic_ = false;
   std::vector<std::string> derivatives_;  ///< 3 gradient and 6 Hessian texts when symbolic_
   std::string not_symbolic_;              ///< why not, otherwise
+  std::vector<std::string> singular_, singular_names_;  ///< SymbolicDerivatives::singular, when symbolic_
   std::uint64_t id_;
 };
 

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "basis/basis_values.hpp"
 #include "basis/geometry.hpp"
@@ -66,6 +67,9 @@ class FormNeeds {
   /// then skips the Hessians unless another form asks for them).
   virtual bool hessian() const { return derivatives() >= 2; }
   virtual int components() const { return 1; }
+  /// The functions the form integrates over the domain (a source, a coefficient): the assembler checks each over
+  /// the whole domain after its element loop (fem/data_check.hpp). None by default.
+  virtual std::vector<const Function*> data() const { return {}; }
 };
 
 class BilinearForm : public FormNeeds {
@@ -94,6 +98,7 @@ class StiffnessForm final : public BilinearForm {
  public:
   explicit StiffnessForm(std::shared_ptr<const Function> coefficient = nullptr) : a_(std::move(coefficient)) {}
   void add(const ElementContext& ctx, Eigen::MatrixXd& local) const override;
+  std::vector<const Function*> data() const override { return a_ ? std::vector<const Function*>{a_.get()} : std::vector<const Function*>{}; }
 
  private:
   std::shared_ptr<const Function> a_;
@@ -114,6 +119,7 @@ class SourceForm final : public LinearForm {
  public:
   explicit SourceForm(std::shared_ptr<const Function> f) : f_(std::move(f)) {}
   void add(const ElementContext& ctx, Eigen::VectorXd& local) const override;
+  std::vector<const Function*> data() const override { return f_ ? std::vector<const Function*>{f_.get()} : std::vector<const Function*>{}; }
 
  private:
   std::shared_ptr<const Function> f_;

@@ -331,6 +331,55 @@ class Writer {
   }
 };
 
+// The factors of `base` whose zeros are those of base: products split, positive powers and abs(a) read as their
+// base, polynomials factored over the rationals; constants left out.
+void split_factors(const ex& base, const Symbols& s, std::vector<ex>& out) {
+  if (!base.has(s.x) && !base.has(s.y) && !base.has(s.z)) return;
+  if (GiNaC::is_a<GiNaC::mul>(base)) {
+    for (std::size_t i = 0; i < base.nops(); ++i) split_factors(base.op(i), s, out);
+    return;
+  }
+  if (GiNaC::is_a<GiNaC::power>(base) && GiNaC::is_a<GiNaC::numeric>(base.op(1)) &&
+      GiNaC::ex_to<GiNaC::numeric>(base.op(1)).is_positive()) {
+    split_factors(base.op(0), s, out);
+    return;
+  }
+  if (GiNaC::is_a<GiNaC::function>(base) && GiNaC::ex_to<GiNaC::function>(base).get_name() == "iga_abs") {
+    split_factors(base.op(0), s, out);
+    return;
+  }
+  if (base.is_polynomial(GiNaC::lst{s.x, s.y, s.z}) && !GiNaC::is_a<GiNaC::symbol>(base)) {
+    ex f = base;
+    try {
+      f = GiNaC::factor(base);
+    } catch (const std::exception&) {  // float coefficients: not a polynomial over the rationals, kept whole
+    }
+    if (GiNaC::is_a<GiNaC::mul>(f) || GiNaC::is_a<GiNaC::power>(f)) {
+      split_factors(f, s, out);
+      return;
+    }
+  }
+  for (const ex& o : out) {
+    if (o.is_equal(base)) return;
+  }
+  out.push_back(base);
+}
+
+// The singular factors of e (SymbolicDerivatives::singular), with what each is to e (kinds[i]).
+void singular_factors(const ex& e, const Symbols& s, std::vector<ex>& out, std::vector<std::string>& kinds) {
+  if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+      GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_negative()) {
+    split_factors(e.op(0), s, out);
+    kinds.resize(out.size(), "the denominator ");
+  } else if (GiNaC::is_a<GiNaC::function>(e)) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (name == "log") split_factors(e.op(0), s, out);
+    if (name == "tan") split_factors(GiNaC::cos(e.op(0)), s, out);
+    kinds.resize(out.size(), name == "log" ? "the argument of log " : "the denominator ");
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) singular_factors(e.op(i), s, out, kinds);
+}
+
 std::mutex& ginac_lock() {
   static std::mutex m;  // GiNaC's reference counts are not atomic
   return m;
@@ -368,6 +417,15 @@ std::optional<SymbolicDerivatives> differentiate(const std::string& text, std::s
     // Rows xx, xy, yy, xz, yz, zz.
     const int rows[6][2] = {{0, 0}, {0, 1}, {1, 1}, {0, 2}, {1, 2}, {2, 2}};
     for (std::size_t r = 0; r < 6; ++r) d.hessian[r] = w.write(g[rows[r][0]].diff(*v[rows[r][1]]));
+    std::vector<ex> factors;
+    std::vector<std::string> kinds;
+    singular_factors(u, s, factors, kinds);
+    for (std::size_t i = 0; i < factors.size() && d.singular.size() < 16; ++i) {
+      std::ostringstream name;
+      name << kinds[i] << factors[i];
+      d.singular.push_back(w.write(factors[i]));
+      d.singular_names.push_back(name.str());
+    }
     return d;
   } catch (const Unreadable& u) {
     why = u.why;

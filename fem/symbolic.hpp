@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace iga::fem {
 
@@ -13,6 +14,11 @@ struct SymbolicDerivatives {
   std::string reading;                  ///< the expression itself as it was read, written back (for the check)
   std::array<std::string, 3> gradient;  ///< ∂/∂x, ∂/∂y, ∂/∂z
   std::array<std::string, 6> hessian;   ///< xx, xy, yy, xz, yz, zz (Function::hessians' rows)
+  /// Where the expression may be singular: the factors (muparser texts) whose zeros are its poles or log
+  /// singularities, and each one named for messages ("the denominator -3/10+x", "the argument of log -1/2+x"): bases of
+  /// negative powers, arguments of log, cos(a) for tan(a), split into factors (polynomials factored over the
+  /// rationals, abs(a) as a, a^k as a); constants left out; at most 16.
+  std::vector<std::string> singular, singular_names;
 };
 
 /// The derivatives of `text` (the grammar of fem::Expression without nx, ny, nz: numbers, x, y, z, pi, e, _pi, _e,

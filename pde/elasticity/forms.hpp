@@ -35,6 +35,13 @@ class BodyForceForm final : public fem::LinearForm {
  public:
   explicit BodyForceForm(std::array<std::shared_ptr<const fem::Function>, 2> b) : b_(std::move(b)) {}
   int components() const override { return 2; }
+  std::vector<const fem::Function*> data() const override {
+    std::vector<const fem::Function*> d;
+    for (const auto& c : b_) {
+      if (c) d.push_back(c.get());
+    }
+    return d;
+  }
   void add(const fem::ElementContext& ctx, Eigen::VectorXd& local) const override;
 
  private:

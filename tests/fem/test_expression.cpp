@@ -1,6 +1,7 @@
 // muparser expressions: values, constants, normals, errors that name the option, threads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <thread>
@@ -142,4 +143,26 @@ TEST(Expression, NonFiniteValuesAreErrorsNamingThePoint) {
   n(0, 0) = 1.0;
   n(1, 1) = 1.0;
   EXPECT_THROW(g.values(x, n, out), iga::InputError);
+}
+
+// Issue 38, class 5: the singular set read symbolically (fem/data_check.hpp uses it). GiNaC's order of terms is
+// its own: the factors are looked up by name.
+TEST(ExpressionSingular, DenominatorsAndLogArgumentsAreNamed) {
+  const fem::Expression pole("1/(x-3/10) + log(abs(y-1/2)) + 1/(1+x^2)", "--source");
+  const std::vector<std::string>& names = pole.singular_factor_names();
+  ASSERT_EQ(names.size(), 3u);
+  const auto at = [&](const std::string& name) {
+    return static_cast<Eigen::Index>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const Eigen::Index pole_x = at("the denominator -3+10*x");
+  ASSERT_LT(pole_x, 3);
+  ASSERT_LT(at("the argument of log -1/2+y"), 3);
+  ASSERT_LT(at("the denominator 1+x^2"), 3);
+  Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Zero(3, 2);
+  x(0, 1) = 1.0;
+  Eigen::MatrixXd d;
+  pole.singular_factors(x, d);
+  EXPECT_EQ(d(pole_x, 0), -3.0);
+  EXPECT_EQ(d(pole_x, 1), 7.0);
+  EXPECT_TRUE(fem::Expression("sin(pi*x)", "--source").singular_factor_names().empty());
 }
