@@ -44,8 +44,10 @@ if [[ ! -f "$build/CMakeCache.txt" ]]; then
   # -O1 -g1 without NDEBUG: stack traces with file and line (-g1: line tables only, a quarter less compile
   # time than -g for the same traces), and Eigen's index assertions stay on.
   # The Google Benchmark micro-suite measures and is not a test: not built here.
+  # -Wno-error=maybe-uninitialized: at -O1 with ASan, GCC 12 reports libstdc++'s own <regex> automaton
+  # (std::function inside _State) as maybe uninitialized; the warning stays visible, the release build keeps -Werror.
   cmake -S "$root" -B "$build" -G Ninja -DIGA_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -Wno-error=maybe-uninitialized" -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON
 fi
 SECONDS=0
 if [[ -n "$deadline" ]]; then
