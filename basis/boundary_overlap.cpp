@@ -22,12 +22,7 @@ struct Segment {
   std::size_t edge;  // the side (or net edge) it samples, for messages
 };
 
-Eigen::MatrixX2d local_points(const Geometry& g, Index e) {
-  const auto dofs = g.space().dofs(e);
-  Eigen::MatrixX2d p(static_cast<Eigen::Index>(dofs.size()), 2);
-  for (std::size_t a = 0; a < dofs.size(); ++a) p.row(static_cast<Eigen::Index>(a)) = g.control_points().row(dofs[a]).head(2);
-  return p;
-}
+Eigen::MatrixX2d local_points(const Geometry& g, Index e) { return g.element_points(e).leftCols<2>(); }
 
 // Physical points of element e at reference points pts.
 Eigen::Matrix2Xd map_points(const Geometry& g, Index e, const Eigen::Matrix2Xd& pts, BasisValues& f) {

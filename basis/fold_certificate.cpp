@@ -232,12 +232,7 @@ Eigen::Matrix3Xd homogeneous(const Eigen::MatrixXd& f, const Eigen::MatrixX2d& p
   return out;
 }
 
-Eigen::MatrixX2d local_points(const Geometry& g, Index e) {
-  const auto dofs = g.space().dofs(e);
-  Eigen::MatrixX2d points(static_cast<Eigen::Index>(dofs.size()), 2);
-  for (std::size_t a = 0; a < dofs.size(); ++a) points.row(static_cast<Eigen::Index>(a)) = g.control_points().row(dofs[a]).head(2);
-  return points;
-}
+Eigen::MatrixX2d local_points(const Geometry& g, Index e) { return g.element_points(e).leftCols<2>(); }
 
 std::optional<Finding> check_polynomial_element(const Geometry& g, Index e, int degree, const Eigen::VectorXd* w) {
   BasisValues f;

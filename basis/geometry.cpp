@@ -173,6 +173,13 @@ void Geometry::finish(Index e, Index q, GeometryValues& out, bool check) const {
   }
 }
 
+Eigen::MatrixXd Geometry::element_points(Index e) const {
+  const auto dofs = space_->dofs(e);
+  Eigen::MatrixXd p(static_cast<Eigen::Index>(dofs.size()), dim());
+  for (std::size_t a = 0; a < dofs.size(); ++a) p.row(static_cast<Eigen::Index>(a)) = control_points_.row(dofs[a]);
+  return p;
+}
+
 void Geometry::evaluate(Index e, const Eigen::Matrix2Xd& pts, GeometryValues& out) const {
   BasisValues basis;
   space_->evaluate(e, pts, 1, basis);

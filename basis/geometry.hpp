@@ -31,6 +31,8 @@ class Geometry {
   const std::shared_ptr<const Space>& space_ptr() const { return space_; }
   int dim() const { return static_cast<int>(control_points_.cols()); }
   const Eigen::MatrixXd& control_points() const { return control_points_; }
+  /// Element e's control points in dofs(e) order (dofs × dim).
+  Eigen::MatrixXd element_points(Index e) const;
   /// Planar geometries: +1 when det J > 0 (a counter-clockwise map, as a net whose faces are listed
   /// counter-clockwise gives), −1 when det J < 0 (clockwise), decided by the majority of the elements' centres;
   /// evaluation refuses points of the other sign (a fold). Surfaces: +1.

@@ -77,6 +77,10 @@ class Space {
   virtual std::vector<InteriorEdge> interior_edges() const;
   /// Refinement level of element e in a hierarchical space (0 = the coarsest); 0 for single-level spaces.
   virtual int level(Index) const { return 0; }
+  /// Whether refining an element into `level` must first build that level of the space's hierarchy (Catmull–Clark
+  /// builds each level on first use, the dominant cost of a deep adaptive step): for time forecasts. False for
+  /// single-level spaces and hierarchies whose levels cost nothing to reach.
+  virtual bool builds_level(int) const { return false; }
   /// For exact integration of an infinitely piecewise element (subdivision_view.hpp): its tiles and
   /// subdivision structure; std::nullopt for polynomial elements and backends without one.
   virtual std::optional<SubdivisionElement> subdivision_element(Index) const { return std::nullopt; }

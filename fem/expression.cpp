@@ -202,18 +202,26 @@ std::string Expression::derivative_method(int order) const {
   return Function::derivative_method(order) + " (not symbolic: " + not_symbolic_ + ")";
 }
 
+void Expression::symbolic_derivatives(const Eigen::Matrix3Xd& x, std::size_t first, Eigen::Ref<Eigen::MatrixXd> out,
+                                      const char* of) const {
+  Evaluator& ev = evaluator();
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    ev.at(x, k);
+    for (Eigen::Index r = 0; r < out.rows(); ++r) {
+      out(r, k) = ev.derivative(derivatives_, first + static_cast<std::size_t>(r)).Eval();
+    }
+  }
+  if (out.allFinite()) return;
+  for (Eigen::Index r = 0; r < out.rows(); ++r) check_finite(x, out.row(r).transpose(), of);
+}
+
 void Expression::gradients(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& out) const {
   if (!symbolic_) {
     Function::gradients(x, out);
     return;
   }
-  Evaluator& ev = evaluator();
   out.resize(3, x.cols());
-  for (Eigen::Index k = 0; k < x.cols(); ++k) {
-    ev.at(x, k);
-    for (std::size_t c = 0; c < 3; ++c) out(static_cast<Eigen::Index>(c), k) = ev.derivative(derivatives_, c).Eval();
-  }
-  for (int c = 0; c < 3; ++c) check_finite(x, out.row(c).transpose(), "the gradient of ");
+  symbolic_derivatives(x, 0, out, "the gradient of ");
 }
 
 void Expression::hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Eigen::Dynamic>& out) const {
@@ -221,13 +229,8 @@ void Expression::hessians(const Eigen::Matrix3Xd& x, Eigen::Matrix<double, 6, Ei
     Function::hessians(x, out);
     return;
   }
-  Evaluator& ev = evaluator();
   out.resize(6, x.cols());
-  for (Eigen::Index k = 0; k < x.cols(); ++k) {
-    ev.at(x, k);
-    for (std::size_t r = 0; r < 6; ++r) out(static_cast<Eigen::Index>(r), k) = ev.derivative(derivatives_, 3 + r).Eval();
-  }
-  for (int r = 0; r < 6; ++r) check_finite(x, out.row(r).transpose(), "the Hessian of ");
+  symbolic_derivatives(x, 3, out, "the Hessian of ");
 }
 
 Expression::~Expression() = default;

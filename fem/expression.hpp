@@ -48,6 +48,10 @@ class Expression final : public Function, public BoundaryFunction {
   struct Evaluator;
   Evaluator& evaluator() const;
   void check_finite(const Eigen::Matrix3Xd& x, const Eigen::VectorXd& out, const char* of = "") const;
+  /// Rows first .. first + out.rows() - 1 of the symbolic derivatives (gradient 0..2, Hessian 3..8) at x, checked
+  /// finite (the message names `of`).
+  void symbolic_derivatives(const Eigen::Matrix3Xd& x, std::size_t first, Eigen::Ref<Eigen::MatrixXd> out,
+                            const char* of) const;
   void differentiate();
   std::string text_, what_, quoted_;
   bool allow_normal_;

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 
-#include "basis/hierarchical/hierarchical_space.hpp"
 #include "core/error.hpp"
 
 namespace iga::refine {
@@ -45,13 +44,11 @@ AdaptiveStep solve_step(int step, const basis::Geometry& current, const quadratu
   return s;
 }
 
-// Whether refining `marked` needs a level of the hierarchy that is not built yet.
+// Whether refining `marked` needs a level of the space's hierarchy that is not built yet (Space::builds_level).
 bool builds_level(const basis::Geometry& current, const std::vector<Index>& marked) {
-  const auto* h = dynamic_cast<const basis::hierarchical::HierarchicalSpace*>(&current.space());
-  if (!h) return false;  // the first refinement: level 1 of the coarse space
   int deepest = 0;
   for (Index e : marked) deepest = std::max(deepest, current.space().level(e));
-  return deepest + 1 <= h->hierarchy().max_level() && !h->hierarchy().level_built(deepest + 1);
+  return current.space().builds_level(deepest + 1);
 }
 }  // namespace
 

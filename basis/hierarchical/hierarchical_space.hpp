@@ -46,6 +46,9 @@ class HierarchicalSpace final : public Space {
   std::vector<std::string> boundary_part_names() const override { return hierarchy_->boundary_part_names(); }
   std::vector<InteriorEdge> interior_edges() const override;
   int level(Index e) const override { return elements_[static_cast<std::size_t>(e)].level; }
+  bool builds_level(int level) const override {
+    return level <= hierarchy_->max_level() && !hierarchy_->level_built(level);
+  }
   /// The hierarchy's polynomial_degree of the element's cell.
   std::optional<int> polynomial_degree(Index e) const override;
 
