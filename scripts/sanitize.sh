@@ -70,6 +70,8 @@ echo "sanitize: build done in $((SECONDS / 60)) min $((SECONDS % 60)) s" >&2
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:allocator_may_return_null=1"
 # Passive OpenMP waiting, as the ctest properties give every test (tests/CMakeLists.txt): two tests share two cores.
 export OMP_WAIT_POLICY=PASSIVE
+# Leaks of third-party libraries that no frame of ours can name (scripts/lsan.supp says which and why).
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:report_error_type=1"
 
 corpus="env ASAN_OPTIONS=$ASAN_OPTIONS:max_allocation_size_mb=8192 /usr/bin/python3 $root/tests/bad_input/run_corpus.py --memory-limit-mb 100000000"
