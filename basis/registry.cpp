@@ -1,6 +1,7 @@
 #include "basis/registry.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "basis/boundary_overlap.hpp"
 #include "basis/fold_certificate.hpp"
@@ -64,6 +65,11 @@ Geometry certified(Geometry g) {
 void refuse_cracks(const mesh::PolyMesh& net) {
   if (const std::string why = net_boundary_overlap(net); !why.empty()) throw InputError(why);
 }
+// A backend refining one step names it "refinement 1: "; the caller refining step by step names the step itself.
+std::string strip_step_label(const std::string& message) {
+  const std::string label = "refinement 1: ";
+  return message.rfind(label, 0) == 0 ? message.substr(label.size()) : message;
+}
 }  // namespace
 
 Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
@@ -90,17 +96,17 @@ mesh::PolyMesh net_with_control_points(const mesh::PolyMesh& net, const Geometry
 }
 
 Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
-                                 int steps, BackendFacts& facts) {
+                                 int steps, BackendFacts& facts, bool keep_steps) {
   if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
   if (!backend.nested && net && steps > 0 && backend.refine_net) {
     refuse_cracks(*net);
     Geometry g = certified(backend.from_net(backend.refine_net(*net, steps, options, facts), options, facts));
     return {std::move(g), Eigen::SparseMatrix<double>(), false};
   }
-  return refine_uniform(make_geometry(backend, net, options, facts), steps, facts);
+  return refine_uniform(make_geometry(backend, net, options, facts), steps, facts, keep_steps);
 }
 
-Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts) {
+Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts, bool keep_steps) {
   if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
   if (steps == 0) {
     const Index n = geometry.space().num_dofs();
@@ -110,7 +116,27 @@ Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& fac
   }
   const Backend& b = backend_of(geometry.space());
   if (!b.refine) throw UnsupportedError("uniform refinement of a '" + b.name + "' space is not implemented");
-  return b.refine(geometry, steps, facts);
+  if (!keep_steps || !b.nested) return b.refine(geometry, steps, facts);
+  // One step at a time, each step's prolongation kept. A step's refusal names the step, as the backends do when
+  // they refine several steps at once.
+  Refinement out{geometry, Eigen::SparseMatrix<double>(), true};
+  for (int k = 0; k < steps; ++k) {
+    std::optional<Refinement> next;
+    try {
+      next = b.refine(out.geometry, 1, facts);
+    } catch (const InputError& e) {
+      throw InputError("refinement " + std::to_string(k + 1) + ": " + strip_step_label(e.what()));
+    }
+    if (k == 0) {
+      out.prolongation = next->prolongation;
+    } else {
+      Eigen::SparseMatrix<double> composed = next->prolongation * out.prolongation;
+      out.prolongation.swap(composed);
+    }
+    out.geometry = std::move(next->geometry);
+    out.steps.push_back(std::move(next->prolongation));
+  }
+  return out;
 }
 
 Refinement refine_marked(const Geometry& geometry, std::span<const Index> marked, int admissibility,

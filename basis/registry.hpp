@@ -45,6 +45,9 @@ struct Refinement {
   Geometry geometry;
   Eigen::SparseMatrix<double> prolongation;
   bool nested = true;
+  /// When asked for (keep_steps): the prolongation of each uniform step, coarsest first (steps[k] maps the dofs
+  /// after k steps to those after k + 1; their product is `prolongation`): the levels of a multigrid solver.
+  std::vector<Eigen::SparseMatrix<double>> steps{};
 };
 
 /// One Bézier patch of a geometry for export (BezierView .bv): a tensor-product patch of degrees
@@ -113,12 +116,13 @@ int degree(const Backend& backend, const BackendOptions& options);
 Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
                        BackendFacts& facts);
 /// The geometry from a net (or the default geometry) refined `steps` >= 0 times: nested backends build and
-/// refine (with the prolongation), the others refine the net first and build once.
+/// refine (with the prolongation), the others refine the net first and build once. keep_steps: nested backends
+/// also return each step's prolongation (Refinement::steps; refined one step at a time, the same spaces).
 Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* net, const BackendOptions& options,
-                                 int steps, BackendFacts& facts);
+                                 int steps, BackendFacts& facts, bool keep_steps = false);
 /// `steps` >= 0 uniform refinements through the backend of the geometry's space (steps = 0: the geometry and
-/// the identity).
-Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts);
+/// the identity, no steps). keep_steps: as make_refined_geometry.
+Refinement refine_uniform(const Geometry& geometry, int steps, BackendFacts& facts, bool keep_steps = false);
 
 /// Local refinement of the marked elements through the backend of the geometry's space (UnsupportedError naming
 /// the backend when it has none).

@@ -101,10 +101,13 @@ void check_predicted_size(const Options& o, const Setup& s) {
 }
 
 iga::refine::Refinement make_geometry(const Options& o, const Setup& s, iga::basis::BackendFacts& facts) {
-  return iga::io::refined_geometry(o.d, s, facts, [&](iga::Index elements, iga::Index dofs) {
-    check_size(o, s, static_cast<double>(std::max(elements, dofs)),
-               "this run (" + std::to_string(elements) + " elements, " + std::to_string(dofs) + " dofs)");
-  });
+  return iga::io::refined_geometry(
+      o.d, s, facts,
+      [&](iga::Index elements, iga::Index dofs) {
+        check_size(o, s, static_cast<double>(std::max(elements, dofs)),
+                   "this run (" + std::to_string(elements) + " elements, " + std::to_string(dofs) + " dofs)");
+      },
+      o.solver == "mg");
 }
 
 // The problem: a built-in manufactured one, or expressions. problem_name: the built-in one's name, or "".
@@ -349,14 +352,14 @@ nlohmann::json solve_run(const Options& o) {
   const Setup s = make_setup(o);
   check_predicted_size(o, s);
   basis::BackendFacts facts;
-  const refine::Refinement refined = progress.phase("refinement", [&] { return make_geometry(o, s, facts); });
+  refine::Refinement refined = progress.phase("refinement", [&] { return make_geometry(o, s, facts); });
   for (const std::string& note : facts.notes) log(note);
   const basis::Geometry& geometry = refined.geometry;
   if (geometry.orientation() < 0) log("note: the planar net is oriented clockwise (det J < 0); solved as it is (the same solution)");
   std::string problem_name;
   const fem::PoissonProblem problem = make_problem(o, geometry, problem_name);
   const std::unique_ptr<quadrature::RuleProvider> rules = iga::io::make_rules(o.d, s);
-  const fem::SolverOptions solver = io::solver_options(o.solver, o.petsc_options);
+  const fem::SolverOptions solver = io::solver_options(o.solver, o.petsc_options, std::move(refined.steps));
 
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
       std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
@@ -479,8 +482,8 @@ int main(int argc, char** argv) {
   app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms")->check(iga::io::non_blank());
   app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(iga::io::finite_number(0))->capture_default_str();
-  app.add_option("--solver", o.solver, "cholmod, cg (Eigen, incomplete Cholesky), or petsc (a PETSc KSP, CG + GAMG by default, on the ranks of mpirun: each assembles its own part of a METIS partition)")->capture_default_str();
-  app.add_option("--petsc-options", o.petsc_options, "--solver petsc: PETSc options, e.g. '-pc_type hypre' or '-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps' (the PETSC_OPTIONS environment is read too)")->check(iga::io::non_blank());
+  app.add_option("--solver", o.solver, "cholmod, cg (Eigen, incomplete Cholesky), petsc (a PETSc KSP, CG + GAMG by default, on the ranks of mpirun: each assembles its own part of a METIS partition), or mg (PETSc CG + geometric multigrid on the nested spaces of the --refine steps, and of the adaptive steps with --adaptive)")->capture_default_str();
+  app.add_option("--petsc-options", o.petsc_options, "--solver petsc or mg: PETSc options, e.g. '-pc_type hypre' or '-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps' (the PETSC_OPTIONS environment is read too)")->check(iga::io::non_blank());
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();
   app.add_option("--vtu-samples", o.samples, "--vtu-format linear: sample points per direction per element in the .vtu")->check(iga::io::whole_number(2, 64))->capture_default_str();
@@ -513,10 +516,10 @@ int main(int argc, char** argv) {
   o.vtu_given = app.count("--vtu") > 0;
   o.json_given = app.count("--json") > 0;
   // --solver petsc: on the ranks of mpirun (one without it), rank 0 speaking for all.
-  return iga::io::run_solver_program("iga-poisson", o.solver == "petsc", argv, o.quiet, o.threads, [&] {
+  return iga::io::run_solver_program("iga-poisson", iga::io::solver_uses_petsc(o.solver), argv, o.quiet, o.threads, [&] {
     if (iga::fem::ranks() > 1 && (o.adaptive >= 0 || !o.study.empty())) {
       throw iga::UnsupportedError(std::string(o.adaptive >= 0 ? "--adaptive" : "--study") +
-                                  " with --solver petsc on more than one rank: not supported yet (run it on one rank)");
+                                  " with --solver " + o.solver + " on more than one rank: not supported yet (run it on one rank)");
     }
     return o.study.empty() ? run(o) : study(o);
   });

@@ -38,7 +38,7 @@ class EigenSystem final : public LinearSystem {
 }  // namespace
 
 std::unique_ptr<LinearSystem> make_linear_system(const Assembler& assembler, const SolverOptions& options) {
-  if (options.kind == SolverKind::Petsc) return make_petsc_system(assembler, options);
+  if (uses_petsc(options.kind)) return make_petsc_system(assembler, options);
   return std::make_unique<EigenSystem>(assembler, options);
 }
 

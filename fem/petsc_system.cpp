@@ -16,54 +16,14 @@
 #include "fem/linear_system.hpp"
 #include "fem/parallel.hpp"
 #include "fem/partition.hpp"
+#include "fem/petsc_multigrid.hpp"
+#include "fem/petsc_util.hpp"
 
 namespace iga::fem {
 
 namespace {
 
-// PETSc's message for an error code: the specific one of the last error ("Unknown PC type: ..."), else the
-// generic one, on one line.
-std::string petsc_message(PetscErrorCode code) {
-  const char* text = nullptr;
-  char* specific = nullptr;
-  PetscErrorMessage(code, &text, &specific);
-  std::string m = specific && *specific ? specific : text ? text : "error " + std::to_string(code);
-  for (char& c : m) {
-    if (c == '\n') c = ' ';
-  }
-  while (!m.empty() && m.back() == ' ') m.pop_back();
-  return m;
-}
-
-// A PETSc call's error code as one line.
-void check(PetscErrorCode code, const char* what) {
-  if (code != 0) throw NumericalError(std::string("PETSc: ") + what + " failed: " + petsc_message(code));
-}
-
-// Owns a PETSc object and destroys it (PETSc's XDestroy(&x) convention).
-template <class T, PetscErrorCode (*Destroy)(T*)>
-class Handle {
- public:
-  Handle() = default;
-  ~Handle() {
-    if (p_) Destroy(&p_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  T* out() { return &p_; }
-  void reset() {
-    if (p_) Destroy(&p_);
-  }
-  operator T() const { return p_; }
-
- private:
-  T p_ = nullptr;
-};
-using MatH = Handle<Mat, MatDestroy>;
-using VecH = Handle<Vec, VecDestroy>;
-using IsH = Handle<IS, ISDestroy>;
-using KspH = Handle<KSP, KSPDestroy>;
-using ScatterH = Handle<VecScatter, VecScatterDestroy>;
+using namespace petsc;
 
 class PetscSystem;
 
@@ -154,6 +114,8 @@ class PetscSystem final : public LinearSystem {
   struct Reduced;
   void reduce(const DirichletConditions& bc, Reduced& r);
   Eigen::VectorXd gather(Vec v) const;  // a vector in distributed numbering, whole and in dof numbering
+  // r.w = the free entries of u (dof numbering, the whole field): the KSP's initial guess.
+  void start_from(const Eigen::VectorXd& u, Reduced& r) const;
   // KSP (CG + GAMG unless the options say otherwise) on r.a w = r.b; iterations and name into s.
   void run_ksp(Reduced& r, PetscInt size, SolveResult& s);
 
@@ -351,6 +313,7 @@ struct PetscSystem::Reduced {
   MatH a, t;      // reduced operator; T (coupled conditions only)
   VecH b, w, u0;  // reduced load and solution; u0 in distributed numbering
   IsH free;       // the owned free rows (selection T)
+  MultigridLevel finest;  // the free dofs' reduced indices and their ranks (the finest level of a multigrid)
 };
 
 void PetscSystem::reduce(const DirichletConditions& bc, Reduced& r) {
@@ -374,12 +337,19 @@ void PetscSystem::reduce(const DirichletConditions& bc, Reduced& r) {
   for (Index d = 0; d < n; ++d) inverse[static_cast<std::size_t>(part_.number[static_cast<std::size_t>(d)])] = d;
   std::vector<PetscInt> reduced(static_cast<std::size_t>(n), -1), owned_free;
   PetscInt next = 0;
+  r.finest.offsets.assign(part_.offsets.size(), 0);
+  int holder = 0;  // the rank holding distributed row `row`
   for (Index row = 0; row < n; ++row) {
+    while (row >= part_.offsets[static_cast<std::size_t>(holder) + 1]) r.finest.offsets[static_cast<std::size_t>(++holder)] = next;
     const Index d = inverse[static_cast<std::size_t>(row)];
     if (fixed[static_cast<std::size_t>(d)]) continue;
     if (row >= lo_ && row < hi_) owned_free.push_back(static_cast<PetscInt>(row));
     reduced[static_cast<std::size_t>(d)] = next++;
   }
+  while (static_cast<std::size_t>(holder) + 1 < r.finest.offsets.size()) r.finest.offsets[static_cast<std::size_t>(++holder)] = next;
+  r.finest.reduced.assign(reduced.begin(), reduced.end());
+  r.finest.constrained = bc.dofs;
+  r.finest.coupling = bc.coupling;
   if (bc.coupling.nonZeros() == 0) {
     // T selects the free dofs: A_ff and (b − A u0)_f.
     check(ISCreateGeneral(comm_, static_cast<PetscInt>(owned_free.size()), owned_free.data(), PETSC_COPY_VALUES, r.free.out()),
@@ -423,6 +393,22 @@ void PetscSystem::reduce(const DirichletConditions& bc, Reduced& r) {
   check(MatMultTranspose(r.t, rhs, r.b), "MatMultTranspose");
 }
 
+void PetscSystem::start_from(const Eigen::VectorXd& u, Reduced& r) const {
+  if (u.size() != static_cast<Index>(r.finest.reduced.size())) {
+    throw InputError("initial guess of " + std::to_string(u.size()) + " entries for a system of " +
+                     std::to_string(r.finest.reduced.size()) + " dofs");
+  }
+  if (!u.allFinite()) throw NumericalError("the initial guess of the solver is not finite");
+  const std::size_t me = static_cast<std::size_t>(rank_);
+  const Index lo = r.finest.offsets[me], hi = r.finest.offsets[me + 1];
+  for (std::size_t d = 0; d < r.finest.reduced.size(); ++d) {
+    const Index i = r.finest.reduced[d];
+    if (i >= lo && i < hi) check(VecSetValue(r.w, static_cast<PetscInt>(i), u(static_cast<Index>(d)), INSERT_VALUES), "VecSetValue");
+  }
+  check(VecAssemblyBegin(r.w), "VecAssemblyBegin");
+  check(VecAssemblyEnd(r.w), "VecAssemblyEnd");
+}
+
 void PetscSystem::run_ksp(Reduced& r, PetscInt size, SolveResult& s) {
   KspH ksp;
   check(KSPCreate(comm_, ksp.out()), "KSPCreate");
@@ -430,10 +416,15 @@ void PetscSystem::run_ksp(Reduced& r, PetscInt size, SolveResult& s) {
   check(KSPSetType(ksp, KSPCG), "KSPSetType");
   PC pc = nullptr;
   check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCGAMG), "PCSetType");
+  if (options_.kind == SolverKind::Multigrid) {
+    set_multigrid(pc, comm_, options_, assembler_.components(), r.finest);
+  } else {
+    check(PCSetType(pc, PCGAMG), "PCSetType");
+  }
   const PetscInt its = static_cast<PetscInt>(options_.max_iterations > 0 ? options_.max_iterations : 10 * size);
   check(KSPSetTolerances(ksp, options_.tolerance, 0.0, PETSC_DEFAULT, its), "KSPSetTolerances");
   check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  if (options_.initial_guess) check(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE), "KSPSetInitialGuessNonzero");
   if (const PetscErrorCode code = KSPSetFromOptions(ksp)) throw InputError("PETSc options: " + petsc_message(code));
   check(KSPSolve(ksp, r.b, r.w), "KSPSolve");
   KSPConvergedReason reason;
@@ -446,6 +437,9 @@ void PetscSystem::run_ksp(Reduced& r, PetscInt size, SolveResult& s) {
   check(KSPGetType(ksp, &kt), "KSPGetType");
   check(PCGetType(pc, &pt), "PCGetType");
   s.solver = std::string("petsc-") + kt + "-" + pt;
+  PetscBool mg = PETSC_FALSE;
+  check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCMG, &mg), "PetscObjectTypeCompare");
+  if (mg) describe_multigrid(pc, s);
   if (reason < 0) {
     PetscReal rn = 0;
     KSPGetResidualNorm(ksp, &rn);
@@ -476,6 +470,7 @@ SolveResult PetscSystem::solve(const DirichletConditions& bc) {
   check(MatGetSize(r.a, &size, nullptr), "MatGetSize");
   s.free_dofs = static_cast<Index>(size);
   check(VecDuplicate(r.b, r.w.out()), "VecDuplicate");
+  if (options_.initial_guess) start_from(*options_.initial_guess, r);
   if (size > 0) {
     SolveOptions db(options_.petsc_options);
     run_ksp(r, size, s);

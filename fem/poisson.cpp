@@ -330,6 +330,7 @@ void PoissonSolver::solve() {
   r_.residual_norm = p.residual_norm;
   r_.solver_iterations = p.solver_iterations;
   r_.solver_ordering = p.solver_ordering;
+  r_.multigrid = p.multigrid;
   r_.free_dofs = p.free_dofs;
   r_.ranks = p.ranks;
   r_.elements_per_rank = p.elements_per_rank;

@@ -61,6 +61,7 @@ struct PoissonResult {
   double residual_norm = 0.0;       ///< relative residual of the reduced system
   Index solver_iterations = 0;
   std::string solver_ordering;  ///< the direct solver's fill-reducing ordering ("amd", "metis"; empty for CG)
+  MultigridFacts multigrid;     ///< --solver mg: levels, smoother, coarse solver
   int ranks = 1;                ///< processes that held the system (SolverKind::Petsc)
   std::vector<Index> elements_per_rank, dofs_per_rank;  ///< owned elements and dofs of each rank (PETSc)
   std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc; for the output's pieces)

@@ -93,6 +93,7 @@ void ProblemSolver::solve() {
   r_.solver_ordering = s.ordering;
   r_.residual_norm = s.residual_norm;
   r_.solver_iterations = s.iterations;
+  r_.multigrid = s.multigrid;
   r_.free_dofs = s.free_dofs;
   r_.ranks = s.ranks;
   r_.elements_per_rank = std::move(s.elements_per_rank);

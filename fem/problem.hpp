@@ -84,6 +84,7 @@ struct ProblemResult {
   std::string solver, solver_ordering, error_quadrature;
   double residual_norm = 0.0;
   Index solver_iterations = 0;
+  MultigridFacts multigrid;  ///< --solver mg: levels, smoother, coarse solver
   int ranks = 1;
   std::vector<Index> elements_per_rank, dofs_per_rank;  ///< owned elements and dofs of each rank (PETSc)
   std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc; for the output's pieces)

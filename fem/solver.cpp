@@ -35,8 +35,8 @@ std::string analyse(const Eigen::SparseMatrix<double>& a, Llt& llt) {
 }  // namespace
 
 SolveResult solve(const Eigen::SparseMatrix<double>& a, const Eigen::VectorXd& b, const SolverOptions& options) {
-  if (options.kind == SolverKind::Petsc) {
-    throw InputError("the petsc solver solves an assembled LinearSystem (fem::make_linear_system), not an Eigen matrix");
+  if (uses_petsc(options.kind)) {
+    throw InputError("the petsc and mg solvers solve an assembled LinearSystem (fem::make_linear_system), not an Eigen matrix");
   }
   const auto t0 = std::chrono::steady_clock::now();
   SolveResult r;
@@ -105,7 +105,8 @@ SolverKind parse_solver(const std::string& name) {
   if (name == "cholmod") return SolverKind::Cholmod;
   if (name == "cg") return SolverKind::ConjugateGradient;
   if (name == "petsc") return SolverKind::Petsc;
-  throw InputError("solver '" + name + "': unknown (known: cholmod, cg, petsc)");
+  if (name == "mg") return SolverKind::Multigrid;
+  throw InputError("solver '" + name + "': unknown (known: cholmod, cg, petsc, mg)");
 }
 
 }  // namespace iga::fem

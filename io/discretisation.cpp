@@ -56,14 +56,26 @@ std::vector<Index> parse_intervals(const std::string& list) {
 }
 
 basis::Refinement refined_geometry(const DiscretisationOptions& o, const Discretisation& d, basis::BackendFacts& facts,
-                                   const std::function<void(Index elements, Index dofs)>& check) {
+                                   const std::function<void(Index elements, Index dofs)>& check, bool keep_steps) {
   // --refine-intervals: each step halves only the listed knot intervals, in both directions (refine-and-smooth).
   const std::vector<Index> intervals = parse_intervals(o.refine_intervals);
   const int steps = refine_steps(o, d);
+  if (keep_steps && !d.backend->nested) {
+    throw UnsupportedError("--solver mg: the spaces of --basis " + d.backend->name + " are not nested (each refinement "
+                           "builds a new space on the refined net), so there is no hierarchy for geometric multigrid; "
+                           "--solver petsc solves with algebraic multigrid");
+  }
   basis::Refinement refined = basis::make_refined_geometry(*d.backend, d.net ? &*d.net : nullptr, d.options,
-                                                           intervals.empty() ? steps : 0, facts);
+                                                           intervals.empty() ? steps : 0, facts, keep_steps);
   for (int k = 0; !intervals.empty() && k < steps; ++k) {
-    refined = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
+    basis::Refinement next = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
+    if (keep_steps) {
+      Eigen::SparseMatrix<double> total = next.prolongation * refined.prolongation;
+      next.steps = std::move(refined.steps);
+      next.steps.push_back(std::move(next.prolongation));
+      next.prolongation = std::move(total);
+    }
+    refined = std::move(next);
   }
   if (check) check(refined.geometry.space().num_elements(), refined.geometry.space().num_dofs());
   return refined;

@@ -54,10 +54,12 @@ double predicted_elements(const DiscretisationOptions& o, const Discretisation& 
 std::vector<Index> parse_intervals(const std::string& list);
 
 /// The geometry refined as asked (uniformly, or --refine-intervals' refine-and-smooth steps); check(elements, dofs)
-/// runs on the refined space before anything is assembled on it (a program's memory check).
+/// runs on the refined space before anything is assembled on it (a program's memory check). keep_steps (--solver
+/// mg): each step's prolongation too (Refinement::steps); UnsupportedError for a backend whose spaces are not nested.
 basis::Refinement refined_geometry(const DiscretisationOptions& o, const Discretisation& d,
                                     basis::BackendFacts& facts,
-                                    const std::function<void(Index elements, Index dofs)>& check = {});
+                                    const std::function<void(Index elements, Index dofs)>& check = {},
+                                    bool keep_steps = false);
 
 /// The rules of --quadrature (or the backend's default); InputError naming --quadrature for a bad specification and
 /// for Gauss rules with fewer than degree + 1 points per direction.

@@ -67,11 +67,13 @@ inline void record_given_options(const CLI::App& app, DiscretisationOptions& o) 
 /// --solver, --petsc-options, --threads and --max-memory of a PDE program (io/problem_run.hpp).
 inline void add_solver_options(CLI::App& app, ProblemProgram& run) {
   app.add_option("--solver", run.solver,
-                 "cholmod, cg (Eigen, incomplete Cholesky), or petsc (a PETSc KSP, CG + GAMG by default, on the ranks of "
-                 "mpirun: each assembles its own part of a METIS partition)")
-      ->check(CLI::IsMember({"cholmod", "cg", "petsc"}))->capture_default_str();
+                 "cholmod, cg (Eigen, incomplete Cholesky), petsc (a PETSc KSP, CG + GAMG by default, on the ranks of "
+                 "mpirun: each assembles its own part of a METIS partition), or mg (PETSc CG + geometric multigrid on the "
+                 "nested spaces of the --refine steps)")
+      ->check(CLI::IsMember({"cholmod", "cg", "petsc", "mg"}))->capture_default_str();
   app.add_option("--petsc-options", run.petsc_options,
-                 "--solver petsc: PETSc options, e.g. '-pc_type hypre' (the PETSC_OPTIONS environment is read too)")
+                 "--solver petsc or mg: PETSc options, e.g. '-pc_type hypre' or '-mg_levels_pc_type sor' (the "
+                 "PETSC_OPTIONS environment is read too)")
       ->check(non_blank());
   app.add_option("--threads", run.threads, "threads for assembly (default: OpenMP's)")->check(thread_count());
   app.add_option("--max-memory", run.max_memory,

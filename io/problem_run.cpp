@@ -45,15 +45,21 @@ void report_problem_result(nlohmann::json& j, const fem::ProblemResult& r, const
   }
 }
 
-fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options) {
+fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options,
+                                  std::vector<Eigen::SparseMatrix<double>> hierarchy) {
   fem::SolverOptions options;
   options.kind = fem::parse_solver(solver);
   options.petsc_options = petsc_options;
-  if (!petsc_options.empty() && options.kind != fem::SolverKind::Petsc) {
-    throw InputError("--petsc-options: only with --solver petsc");
+  if (!petsc_options.empty() && !fem::uses_petsc(options.kind)) {
+    throw InputError("--petsc-options: only with --solver petsc or mg");
+  }
+  if (options.kind == fem::SolverKind::Multigrid) {
+    options.hierarchy = std::make_shared<const std::vector<Eigen::SparseMatrix<double>>>(std::move(hierarchy));
   }
   return options;
 }
+
+bool solver_uses_petsc(const std::string& solver) { return solver == "petsc" || solver == "mg"; }
 
 int run_solver_program(const std::string& program, bool petsc, char** argv, bool& quiet, int& threads,
                        const std::function<int()>& body) {
@@ -104,11 +110,14 @@ nlohmann::json run_problem_program(const ProblemProgram& run) {
     check_size(run, d, run.components, predicted_elements(run.discretisation, d), what.str());
   }
   basis::BackendFacts facts;
-  const basis::Refinement refined = progress.phase("refinement", [&] {
-    return refined_geometry(run.discretisation, d, facts, [&](Index elements, Index dofs) {
-      check_size(run, d, run.components, static_cast<double>(std::max(elements, dofs)),
-                 "this run (" + std::to_string(elements) + " elements, " + std::to_string(dofs) + " dofs)");
-    });
+  basis::Refinement refined = progress.phase("refinement", [&] {
+    return refined_geometry(
+        run.discretisation, d, facts,
+        [&](Index elements, Index dofs) {
+          check_size(run, d, run.components, static_cast<double>(std::max(elements, dofs)),
+                     "this run (" + std::to_string(elements) + " elements, " + std::to_string(dofs) + " dofs)");
+        },
+        run.solver == "mg");
   });
   for (const std::string& note : facts.notes) log(note);
   const basis::Geometry& geometry = refined.geometry;
@@ -116,7 +125,7 @@ nlohmann::json run_problem_program(const ProblemProgram& run) {
   j.update(discretisation_report(run.discretisation, d, refined, facts));
   const std::shared_ptr<const fem::Problem> problem = run.problem(geometry, j);
   const std::unique_ptr<quadrature::RuleProvider> rules = make_rules(run.discretisation, d);
-  const fem::SolverOptions solver = solver_options(run.solver, run.petsc_options);
+  const fem::SolverOptions solver = solver_options(run.solver, run.petsc_options, std::move(refined.steps));
   fem::ProblemSolver p(geometry, *rules, problem, solver);
   // The problem's checks come first (setup: the data; assembly: the constraints): an error is the only line.
   progress.phase("setup and pattern", [&] { p.setup(); });

@@ -21,7 +21,8 @@ namespace iga::io {
 /// The figures every solve reports, of a fem::ProblemResult or a fem::PoissonResult r: domain_measure, threads, the
 /// seconds of pattern and assembly (the slowest rank's: a distributed phase ends with it) and solve, ranks (with
 /// elements_per_rank and dofs_per_rank when distributed), petsc_options, solver, solver_iterations,
-/// solver_ordering, residual_norm and residual_tolerance.
+/// solver_ordering, residual_norm and residual_tolerance; multigrid (levels, smoother, coarse_solver,
+/// coarse_operators) for --solver mg.
 template <class Result>
 void report_solve(nlohmann::json& j, const Result& r, const fem::SolverOptions& solver) {
   j["domain_measure"] = r.domain_measure;
@@ -40,6 +41,10 @@ void report_solve(nlohmann::json& j, const Result& r, const fem::SolverOptions& 
   j["solver_ordering"] = r.solver_ordering;
   j["residual_norm"] = r.residual_norm;
   j["residual_tolerance"] = solver.max_residual;
+  if (r.multigrid.levels > 0) {
+    j["multigrid"] = {{"levels", r.multigrid.levels}, {"smoother", r.multigrid.smoother},
+                      {"coarse_solver", r.multigrid.coarse_solver}, {"coarse_operators", "galerkin"}};
+  }
 }
 
 /// The report's figures of a solve r, into j (report_solve's, and): pde (the problem's name), dofs, free_dofs, constrained_dofs, elements, quadrature (the rules'
@@ -51,8 +56,13 @@ void report_solve(nlohmann::json& j, const Result& r, const fem::SolverOptions& 
 void report_problem_result(nlohmann::json& j, const fem::ProblemResult& r, const std::string& quadrature,
                            const fem::SolverOptions& solver);
 
-/// --solver and --petsc-options: InputError naming --petsc-options when it is given for another solver.
-fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options);
+/// --solver and --petsc-options: InputError naming --petsc-options when it is given for another solver. --solver mg:
+/// the prolongations of the uniform refinement steps (basis::Refinement::steps) are its levels.
+fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options,
+                                  std::vector<Eigen::SparseMatrix<double>> hierarchy = {});
+
+/// Whether --solver runs on PETSc (petsc, mg): the program opens a PETSc session (run_solver_program). Never throws.
+bool solver_uses_petsc(const std::string& solver);
 
 /// Runs body() (io::run_program's exit codes and one error line) — with petsc, inside a PETSc session on the ranks
 /// of mpirun: PETSc reads no command-line option of its own (they come through --petsc-options and PETSC_OPTIONS),

@@ -64,6 +64,16 @@ AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::Ru
   AdaptiveRun run;
   std::vector<AdaptiveStep>& history = run.history;
   basis::Geometry current = geometry;
+  // Multigrid: every adaptive space is one more level (the prolongation of each step is kept), and each solve
+  // starts from the previous solution prolongated.
+  fem::SolverOptions step_solver = solver;
+  const bool multigrid = solver.kind == fem::SolverKind::Multigrid;
+  std::shared_ptr<std::vector<Eigen::SparseMatrix<double>>> levels;
+  if (multigrid) {
+    levels = std::make_shared<std::vector<Eigen::SparseMatrix<double>>>(solver.hierarchy ? *solver.hierarchy
+                                                                                         : std::vector<Eigen::SparseMatrix<double>>());
+    step_solver.hierarchy = levels;
+  }
   auto finish = [&](AdaptiveStep& s, std::string why) {
     if (check) check(s, std::nullopt);
     run.stopped = std::move(why);
@@ -72,7 +82,7 @@ AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::Ru
   for (int step = 0;; ++step) {
     std::optional<fem::PoissonSolver> ps;
     fem::Estimate est;
-    AdaptiveStep s = solve_step(step, current, rules, problem, solver, ps, est);
+    AdaptiveStep s = solve_step(step, current, rules, problem, step_solver, ps, est);
     const bool last = step >= options.steps || (options.max_dofs > 0 && s.dofs >= options.max_dofs);
     if (on_step) on_step(s, current, ps->result(), est);
     if (last) {
@@ -98,7 +108,7 @@ AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::Ru
     basis::BackendFacts facts;
     std::optional<basis::Refinement> refined;
     try {
-      refined = backend.refine_marked(current, marked, options.admissibility, facts, false);
+      refined = backend.refine_marked(current, marked, options.admissibility, facts, multigrid);
     } catch (const UnsupportedError& e) {
       run.stopped = std::string("deepest level: ") + e.what();
       history.push_back(s);
@@ -109,6 +119,10 @@ AdaptiveRun adaptive_solve(const basis::Geometry& geometry, const quadrature::Ru
     s.added = facts.counts["added"];
     history.push_back(s);
     current = refined->geometry;
+    if (multigrid) {
+      step_solver.initial_guess = std::make_shared<const Eigen::VectorXd>(refined->prolongation * ps->result().u);
+      levels->push_back(std::move(refined->prolongation));
+    }
   }
   return run;
 }

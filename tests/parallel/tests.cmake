@@ -22,3 +22,12 @@ add_test(NAME pde_programs_petsc
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_LIST_DIR}/pde_programs_petsc.py $<TARGET_FILE:iga-biharmonic>
                  $<TARGET_FILE:iga-elasticity> ${MPIEXEC_EXECUTABLE} ${CMAKE_CURRENT_BINARY_DIR}/pde_programs_petsc)
 set_tests_properties(pde_programs_petsc PROPERTIES LABELS mpi TIMEOUT 600)
+# Geometric multigrid (--solver mg, fem/multigrid.hpp, PCMG) against CHOLMOD, at 1 rank and under mpirun at 2.
+add_executable(test_multigrid ${CMAKE_CURRENT_LIST_DIR}/test_multigrid.cpp)
+target_compile_options(test_multigrid PRIVATE ${IGA_WARNINGS})
+target_link_libraries(test_multigrid PRIVATE iga::iga GTest::gtest)
+target_include_directories(test_multigrid PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+add_test(NAME multigrid_1_rank COMMAND test_multigrid)
+add_test(NAME multigrid_2_ranks
+         COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --allow-run-as-root --oversubscribe $<TARGET_FILE:test_multigrid>)
+set_tests_properties(multigrid_1_rank multigrid_2_ranks PROPERTIES LABELS mpi TIMEOUT 600 ENVIRONMENT "OMP_NUM_THREADS=1")
