@@ -49,13 +49,23 @@ class SolveOptions {
   }
   SolveOptions(const SolveOptions&) = delete;
   SolveOptions& operator=(const SolveOptions&) = delete;
-  /// An option no object read is a misspelling or one for another solver: named, not silently ignored.
+  /// An option no object read is a misspelling or one for another solver: named, not silently ignored. Options
+  /// that PETSc read at its initialisation (PETSC_OPTIONS' -log_view, -malloc_debug, ...) count as used.
   void check_all_used() const {
     PetscInt left = 0;
     char** names = nullptr;
     char** values = nullptr;
     check(PetscOptionsLeftGet(db_, &left, &names, &values), "PetscOptionsLeftGet");
-    const std::string unused = left > 0 && names[0] ? names[0] : "";
+    std::string unused;
+    for (PetscInt k = 0; k < left && unused.empty(); ++k) {
+      if (!names[k]) continue;
+      PetscBool global = PETSC_FALSE;
+      PetscOptionsPop();  // the global database: what PetscInitialize read
+      const PetscErrorCode code = PetscOptionsUsed(nullptr, names[k], &global);
+      PetscOptionsPush(db_);
+      check(code, "PetscOptionsUsed");
+      if (!global) unused = names[k];
+    }
     PetscOptionsLeftRestore(db_, &left, &names, &values);
     if (!unused.empty()) {
       throw InputError("PETSc option -" + unused + " was not used by the solver (misspelt, or for another KSP/PC?)");

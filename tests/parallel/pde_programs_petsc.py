@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""iga-biharmonic and iga-elasticity with --solver petsc under mpirun at 2 ranks (one OpenMP thread each): every
+"""iga-biharmonic and iga-elasticity with --solver petsc (and mg) under mpirun at 2 ranks (one OpenMP thread each): every
 error figure of the report against a serial CHOLMOD run of the same problem to 1e-8 (relative), the ranks' shares
 adding up to the whole, and the .pvtu with one piece per rank.
 Usage: pde_programs_petsc.py IGA_BIHARMONIC IGA_ELASTICITY MPIEXEC WORKDIR"""
@@ -44,6 +44,22 @@ for exe, args in ((biharmonic, ["--refine", "4", "--simply-supported", "v0"]), (
         check(abs(q - e["error"]) <= 1e-8 * e["error"], f"{name}: {key} error {q} against CHOLMOD's {e['error']}")
     check(p["vtu"].endswith(".pvtu") and all(os.path.exists(os.path.join(work, f"{name}_{k}.vtu")) for k in (0, 1)),
           f"{name}: the .pvtu and its two pieces: {p.get('vtu')}")
+
+# --solver mg (geometric multigrid on the --refine steps; elasticity: the prolongation per component) on 2 ranks:
+# the same error figures as CHOLMOD's to 1e-8, and the report's multigrid object.
+for exe, args in ((biharmonic, ["--refine", "4", "--simply-supported", "v0"]), (elasticity, ["--refine", "4"])):
+    name = os.path.basename(exe)
+    r = run(mpirun + [exe] + args + ["--quiet", "--solver", "mg", "--vtu", "none", "--json", name + "_mg.json"])
+    check(r.returncode == 0, f"{name} --solver mg on 2 ranks: exit {r.returncode}: {r.stderr}")
+    if r.returncode != 0 or not os.path.exists(os.path.join(work, name + "_serial.json")):
+        continue
+    s = json.load(open(os.path.join(work, name + "_serial.json")))
+    p = json.load(open(os.path.join(work, name + "_mg.json")))
+    check(p["solver"] == "petsc-cg-mg" and p["multigrid"]["levels"] == 5 and p["multigrid"]["coarse_operators"] == "galerkin",
+          f"{name} mg: solver {p['solver']}, multigrid {p.get('multigrid')}")
+    for key, e in s["errors"].items():
+        q = p["errors"][key]["error"]
+        check(abs(q - e["error"]) <= 1e-8 * e["error"], f"{name} mg: {key} error {q} against CHOLMOD's {e['error']}")
 
 if failures:
     print("\n".join(failures))

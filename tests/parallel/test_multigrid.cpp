@@ -4,6 +4,7 @@
 // iterations that stay flat under refinement, the adaptive THB loop, and a solve that misses its tolerance as one
 // line. Every rank runs every test; rank 0 prints.
 #include "support/paths.hpp"
+#include "support/parallel_main.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -255,14 +256,4 @@ TEST(Multigrid, MissedToleranceIsOneLine) {
   EXPECT_EQ(message.find('\n'), std::string::npos);
 }
 
-int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  int args = 1;
-  fem::ParallelSession session(args, argv);
-  if (fem::rank() > 0) {
-    ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  const int failed = RUN_ALL_TESTS();
-  return fem::max_over_ranks(failed) > 0 ? 1 : 0;
-}
+int main(int argc, char** argv) { return test::run_tests_on_every_rank(argc, argv); }

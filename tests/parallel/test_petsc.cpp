@@ -4,6 +4,7 @@
 // parts and the coupled constraints of receding boundaries, convergence rates, and failures as one exception on
 // every rank. Every rank runs every test; rank 0 prints.
 #include "support/paths.hpp"
+#include "support/parallel_main.hpp"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -248,14 +249,4 @@ TEST(PetscSystem, BadOptionsAndFailedSolvesAreOneLineErrors) {
   EXPECT_LE(relative_difference(fem::solve_poisson(g, *rules, p, petsc()).u, fem::solve_poisson(g, *rules, p).u), 1e-10);
 }
 
-int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  int args = 1;
-  fem::ParallelSession session(args, argv);
-  if (fem::rank() > 0) {
-    ::testing::TestEventListeners& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  const int failed = RUN_ALL_TESTS();
-  return fem::max_over_ranks(failed) > 0 ? 1 : 0;
-}
+int main(int argc, char** argv) { return test::run_tests_on_every_rank(argc, argv); }
