@@ -83,6 +83,28 @@ lines = r.stderr.strip().splitlines()
 check(r.returncode != 0 and len(lines) == 1 and ("is infinite at" in lines[0] or "is not finite at" in lines[0]),
       f"a failure on one rank: exit {r.returncode}, stderr {r.stderr!r}")
 
+# --solver mg (geometric multigrid on the --refine steps) without mpirun and at 2 ranks: CHOLMOD's errors to 1e-8, the
+# same iteration count on both, the report's multigrid object; a solve stopped by its iteration limit is one line.
+iterations = []
+for ranks, prefix in ((1, []), (2, mpirun)):
+    name = f"mg{ranks}"
+    r = run(prefix + [exe] + common + ["--solver", "mg", "--vtu", "none", "--json", name + ".json"])
+    check(r.returncode == 0, f"mg on {ranks} rank(s): exit {r.returncode}: {r.stderr}")
+    if r.returncode != 0 or serial.returncode != 0:
+        continue
+    s, p = json.load(open(os.path.join(work, "serial.json"))), json.load(open(os.path.join(work, name + ".json")))
+    check(p["solver"] == "petsc-cg-mg" and p["multigrid"]["levels"] == s["refine"] + 1 and
+          p["multigrid"]["smoother"] == "chebyshev+jacobi x2" and p["multigrid"]["coarse_solver"].startswith("preonly+"),
+          f"mg on {ranks} rank(s): solver {p['solver']}, multigrid {p.get('multigrid')}")
+    for key in ("l2_error", "h1_error"):
+        check(abs(p[key] - s[key]) <= 1e-8 * s[key], f"mg on {ranks} rank(s): {key} {p[key]} against CHOLMOD's {s[key]}")
+    iterations.append(p["solver_iterations"])
+check(len(iterations) == 2 and iterations[0] == iterations[1] and 0 < iterations[0] <= 20, f"mg iterations {iterations}")
+r = run(mpirun + [exe] + common + ["--solver", "mg", "--petsc-options", "-ksp_max_it 1", "--vtu", "none", "--json", "none"])
+lines = r.stderr.strip().splitlines()
+check(r.returncode != 0 and len(lines) == 1 and "did not converge: DIVERGED_ITS after 1 iterations (residual norm" in lines[0],
+      f"mg stopped by its iteration limit: exit {r.returncode}, stderr {r.stderr!r}")
+
 for f in failures:
     print("FAILED:", f)
 print(f"{0 if failures else 1} passed, {len(failures)} failed")
