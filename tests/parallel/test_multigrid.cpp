@@ -4,6 +4,7 @@
 // iterations that stay flat under refinement, the adaptive THB loop, and a solve that misses its tolerance as one
 // line. Every rank runs every test; rank 0 prints.
 #include "support/paths.hpp"
+#include "support/mixed_problem.hpp"
 #include "support/parallel_main.hpp"
 #include <gtest/gtest.h>
 
@@ -64,17 +65,7 @@ fem::SolverOptions mg(std::vector<Eigen::SparseMatrix<double>> hierarchy, double
   return o;
 }
 
-// u = sin πx sin πy, the normal flux on the boundary near y = 0 and Dirichlet data elsewhere.
-fem::PoissonProblem mixed_problem() {
-  const fem::ManufacturedProblem m = fem::manufactured_problem("sine");
-  fem::PoissonProblem p;
-  p.source = m.source;
-  p.dirichlet = m.exact;
-  p.exact = m.exact;
-  p.neumann = fem::normal_flux(m.exact);
-  p.neumann_where = fem::make_function([](const Eigen::Vector3d& x) { return x(1) < 0.05 ? 1.0 : -1.0; });
-  return p;
-}
+fem::PoissonProblem mixed_problem() { return test::sine_with_neumann_near_y0(); }
 
 double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();

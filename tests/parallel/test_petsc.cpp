@@ -4,6 +4,7 @@
 // parts and the coupled constraints of receding boundaries, convergence rates, and failures as one exception on
 // every rank. Every rank runs every test; rank 0 prints.
 #include "support/paths.hpp"
+#include "support/mixed_problem.hpp"
 #include "support/parallel_main.hpp"
 #include <gtest/gtest.h>
 
@@ -50,18 +51,7 @@ std::unique_ptr<quadrature::RuleProvider> rules_of(const Case& c, const basis::G
   return quadrature::make_rule_provider(b.default_quadrature(c.backend == "bspline" ? 3 : 3), 3);
 }
 
-// u = sin πx sin πy with the normal flux (Neumann) on the boundary edges near y = 0 (every domain here has its
-// lower side there; a receding boundary lies a little above it) and Dirichlet data on the others.
-fem::PoissonProblem problem_with_neumann() {
-  const fem::ManufacturedProblem m = fem::manufactured_problem("sine");
-  fem::PoissonProblem p;
-  p.source = m.source;
-  p.dirichlet = m.exact;
-  p.exact = m.exact;
-  p.neumann = fem::normal_flux(m.exact);
-  p.neumann_where = fem::make_function([](const Eigen::Vector3d& x) { return x(1) < 0.05 ? 1.0 : -1.0; });
-  return p;
-}
+fem::PoissonProblem problem_with_neumann() { return test::sine_with_neumann_near_y0(); }
 
 fem::SolverOptions petsc(const std::string& options = "") {
   fem::SolverOptions o;
