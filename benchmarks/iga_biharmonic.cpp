@@ -106,6 +106,6 @@ int main(int argc, char** argv) {
   o.run.quiet = common.quiet;
   o.run.run_info = iga::io::run_info(app, common.program);
   iga::io::record_given_options(app, o.run.discretisation);
-  return iga::io::run_solver_program("iga-biharmonic", iga::io::solver_uses_petsc(o.run.solver), argv, o.run.quiet, o.run.threads,
+  return iga::io::run_solver_program("iga-biharmonic", iga::io::solver_uses_petsc(o.run.solver, o.run.discretisation.basis), argv, o.run.quiet, o.run.threads,
                                      [&] { return run(o); });
 }

@@ -120,6 +120,6 @@ int main(int argc, char** argv) {
     o.run.discretisation.geometry = "plate-with-hole";
     o.run.discretisation.given.emplace_back("geometry");
   }
-  return iga::io::run_solver_program("iga-elasticity", iga::io::solver_uses_petsc(o.run.solver), argv, o.run.quiet, o.run.threads,
+  return iga::io::run_solver_program("iga-elasticity", iga::io::solver_uses_petsc(o.run.solver, o.run.discretisation.basis), argv, o.run.quiet, o.run.threads,
                                      [&] { return run(o); });
 }

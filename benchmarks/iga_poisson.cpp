@@ -516,7 +516,7 @@ int main(int argc, char** argv) {
   o.vtu_given = app.count("--vtu") > 0;
   o.json_given = app.count("--json") > 0;
   // --solver petsc: on the ranks of mpirun (one without it), rank 0 speaking for all.
-  return iga::io::run_solver_program("iga-poisson", iga::io::solver_uses_petsc(o.solver), argv, o.quiet, o.threads, [&] {
+  return iga::io::run_solver_program("iga-poisson", iga::io::solver_uses_petsc(o.solver, o.d.basis), argv, o.quiet, o.threads, [&] {
     if (iga::fem::ranks() > 1 && (o.adaptive >= 0 || !o.study.empty())) {
       throw iga::UnsupportedError(std::string(o.adaptive >= 0 ? "--adaptive" : "--study") +
                                   " with --solver " + o.solver + " on more than one rank: not supported yet (run it on one rank)");

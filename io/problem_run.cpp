@@ -59,7 +59,16 @@ fem::SolverOptions solver_options(const std::string& solver, const std::string& 
   return options;
 }
 
-bool solver_uses_petsc(const std::string& solver) { return solver == "petsc" || solver == "mg"; }
+bool solver_uses_petsc(const std::string& solver, const std::string& basis) {
+  if (solver == "petsc") return true;
+  if (solver != "mg") return false;
+  // mg on a backend that is not nested is refused before anything runs (io::refined_geometry): no session for it
+  // (an MPI session keeps Open MPI's allocations past the refusal). An unknown backend is named by the run itself.
+  for (const basis::Backend& b : basis::backends()) {
+    if (b.name == basis) return b.nested;
+  }
+  return false;
+}
 
 int run_solver_program(const std::string& program, bool petsc, char** argv, bool& quiet, int& threads,
                        const std::function<int()>& body) {

@@ -61,8 +61,9 @@ void report_problem_result(nlohmann::json& j, const fem::ProblemResult& r, const
 fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options,
                                   std::vector<Eigen::SparseMatrix<double>> hierarchy = {});
 
-/// Whether --solver runs on PETSc (petsc, mg): the program opens a PETSc session (run_solver_program). Never throws.
-bool solver_uses_petsc(const std::string& solver);
+/// Whether --solver runs on PETSc (petsc, and mg on a --basis whose spaces are nested: mg on another is refused
+/// before any solve): the program opens a PETSc session (run_solver_program). Never throws.
+bool solver_uses_petsc(const std::string& solver, const std::string& basis);
 
 /// Runs body() (io::run_program's exit codes and one error line) — with petsc, inside a PETSc session on the ranks
 /// of mpirun: PETSc reads no command-line option of its own (they come through --petsc-options and PETSC_OPTIONS),
