@@ -102,17 +102,15 @@ std::vector<MultigridLevel> multigrid_levels(const std::vector<Eigen::SparseMatr
 
 Eigen::SparseMatrix<double, Eigen::RowMajor> reduced_prolongation(const Eigen::SparseMatrix<double>& p, int components,
                                                                   const MultigridLevel& coarse, const MultigridLevel& fine) {
-  const Index d = components;
+  const Eigen::SparseMatrix<double> pf = field_prolongation(p, components);
   std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(d * p.nonZeros()));
-  for (Index j = 0; j < p.outerSize(); ++j) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(p, j); it; ++it) {
-      if (it.value() == 0.0) continue;
-      for (Index c = 0; c < d; ++c) {
-        const Index col = coarse.reduced[static_cast<std::size_t>(d * j + c)];
-        const Index row = fine.reduced[static_cast<std::size_t>(d * it.row() + c)];
-        if (col >= 0 && row >= 0) t.emplace_back(row, col, it.value());
-      }
+  t.reserve(static_cast<std::size_t>(pf.nonZeros()));
+  for (Index j = 0; j < pf.outerSize(); ++j) {
+    const Index col = coarse.reduced[static_cast<std::size_t>(j)];
+    if (col < 0) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(pf, j); it; ++it) {
+      const Index row = fine.reduced[static_cast<std::size_t>(it.row())];
+      if (row >= 0 && it.value() != 0.0) t.emplace_back(row, col, it.value());
     }
   }
   Eigen::SparseMatrix<double, Eigen::RowMajor> out(fine.free(), coarse.free());
