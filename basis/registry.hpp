@@ -28,6 +28,9 @@ struct BackendOptions {
   std::string net_name = "mesh";  ///< the net's file name, for messages
   std::string cc_boundary;        ///< "cc-boundary": cc, natural (default when empty) or clamped
   std::string cc_enrich;          ///< "cc-enrich": cc, none (default when empty) or quadratic (at the EVs)
+  /// "coarse-split" (bspline): every knot interval of the patch split into split_u × split_v equal parts before any
+  /// refinement (knot insertion: the same map, a coarse mesh of chosen aspect ratio)
+  int split_u = 1, split_v = 1;
 };
 
 /// Facts about a build or refinement that a program reports: counts for the JSON report under '/'-separated

@@ -14,6 +14,29 @@ bool DiscretisationOptions::count(const std::string& option) const {
   return std::find(given.begin(), given.end(), option) != given.end();
 }
 
+namespace {
+// --coarse-split "U,V": two whole numbers 1..64.
+void parse_coarse_split(const std::string& text, basis::BackendOptions& options) {
+  int u = 0, v = 0;
+  const auto whole = [](const std::string& item) {
+    if (item.empty() || item.size() > 2 || item.find_first_not_of("0123456789") != std::string::npos) return 0;
+    const int n = std::stoi(item);
+    return n <= 64 ? n : 0;
+  };
+  const std::size_t comma = text.find(',');
+  if (comma != std::string::npos) {
+    u = whole(text.substr(0, comma));
+    v = whole(text.substr(comma + 1));
+  }
+  if (u == 0 || v == 0) {
+    throw InputError("--coarse-split: '" + text + "' is not U,V with U and V whole numbers 1..64 (parts per knot "
+                     "interval along u and v)");
+  }
+  options.split_u = u;
+  options.split_v = v;
+}
+}  // namespace
+
 Discretisation make_discretisation(const DiscretisationOptions& o) {
   Discretisation d;
   d.backend = &basis::backend(o.basis);
@@ -23,6 +46,7 @@ Discretisation make_discretisation(const DiscretisationOptions& o) {
   if (o.count("geometry")) d.options.geometry = o.geometry;
   if (o.count("cc-boundary")) d.options.cc_boundary = o.cc_boundary;
   if (o.count("cc-enrich")) d.options.cc_enrich = o.cc_enrich;
+  if (o.count("coarse-split")) parse_coarse_split(o.coarse_split, d.options);
   d.options.net_name = o.mesh;
   d.degree = basis::degree(*d.backend, d.options);
   if (!o.mesh.empty()) d.net = mesh::read_obj(o.mesh);
@@ -35,7 +59,8 @@ int refine_steps(const DiscretisationOptions& o, const Discretisation& d) {
 
 double predicted_elements(const DiscretisationOptions& o, const Discretisation& d) {
   const int steps = refine_steps(o, d) + (o.count("presubdivide") ? o.presubdivide : 0);
-  return (d.net ? static_cast<double>(d.net->num_faces()) : 1.0) * std::pow(4.0, steps);
+  return (d.net ? static_cast<double>(d.net->num_faces()) : 1.0) * d.options.split_u * d.options.split_v *
+         std::pow(4.0, steps);
 }
 
 std::vector<Index> parse_intervals(const std::string& list) {
@@ -112,6 +137,7 @@ nlohmann::json discretisation_report(const DiscretisationOptions& o, const Discr
   j["refine"] = refine_steps(o, d);
   j["nested_refinement"] = refined.nested;
   if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
+  if (o.count("coarse-split")) j["coarse_split"] = {d.options.split_u, d.options.split_v};
   for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
   return j;
 }

@@ -24,6 +24,7 @@ struct DiscretisationOptions {
   std::string geometry;           ///< --geometry (bspline): a built-in geometry or a patch file
   std::string cc_boundary = "natural", cc_enrich = "none";
   std::string refine_intervals;   ///< --refine-intervals (bspline): 0-based knot intervals, comma-separated
+  std::string coarse_split;       ///< --coarse-split (bspline): "U,V", parts per knot interval along u and v
   std::string quadrature;         ///< --quadrature; empty: the backend's default for the degree
   int degree = 3, refine = -1, presubdivide = 0;  ///< refine < 0: the backend's default
   /// The backend options given on the command line (names without dashes): only these reach the backend.

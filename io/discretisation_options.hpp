@@ -1,6 +1,6 @@
 #pragma once
 // The command-line options of a solver program's discretisation (io/discretisation.hpp), the same words in every
-// program: --mesh, --basis, --degree, --refine, --refine-intervals, --geometry, --cc-boundary, --cc-enrich,
+// program: --mesh, --basis, --degree, --refine, --refine-intervals, --coarse-split, --geometry, --cc-boundary, --cc-enrich,
 // --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
 #include <CLI/CLI.hpp>
 
@@ -28,6 +28,11 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
       ->check(whole_number(1, 12))->capture_default_str();
   app.add_option("--refine-intervals", o.refine_intervals,
                  "bspline: each refinement step halves only these non-empty knot intervals (0-based, comma-separated, both directions)")
+      ->check(non_blank());
+  app.add_option("--coarse-split", o.coarse_split,
+                 "bspline: U,V: before refining, split every knot interval of the patch into U equal parts along u and V "
+                 "along v (knot insertion: the same geometry on a coarse mesh of chosen aspect ratio; e.g. 1,3 makes "
+                 "the quarter annulus's elements about square)")
       ->check(non_blank());
   app.add_option("--refine", o.refine,
                  "uniform refinement steps, each splitting every element in four (default: 4 for bspline, 1 for cc, 0 for "
@@ -59,7 +64,8 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
 /// After parsing: the backend options the user gave (only these reach the backend, which refuses the ones it does
 /// not take).
 inline void record_given_options(const CLI::App& app, DiscretisationOptions& o) {
-  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary", "cc-enrich"}) {
+  for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary", "cc-enrich",
+                             "coarse-split"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
 }

@@ -81,6 +81,24 @@ Refinement refine_midpoints(const Geometry& geometry, int steps, BackendFacts& f
   return {Geometry(coarse, std::move(cp)), std::move(total), true};
 }
 
+// --coarse-split U,V: every knot interval of the patch split into U equal parts along u and V along v by knot
+// insertion, before any refinement: the same map on the run's coarsest space (the multigrid's coarsest level too).
+Geometry split_patch(Geometry geometry, const BackendOptions& o) {
+  if (o.split_u == 1 && o.split_v == 1) return geometry;
+  const bspline::RationalSpace* rational = bspline::rational_space(geometry.space());
+  const TensorSpace& coarse = rational ? rational->base() : tensor_of(geometry);
+  auto fine = std::make_shared<const TensorSpace>(
+      bspline::split_intervals(coarse.knots_u(), o.split_u, "--coarse-split: the u knot interval"),
+      bspline::split_intervals(coarse.knots_v(), o.split_v, "--coarse-split: the v knot interval"));
+  const Eigen::SparseMatrix<double> r = bspline::refinement_matrix(coarse, *fine);
+  if (rational) {
+    Eigen::SparseMatrix<double> prolongation;
+    return bspline::refine_rational(geometry, std::move(fine), r, &prolongation);
+  }
+  Eigen::MatrixXd cp = r * geometry.control_points();
+  return Geometry(std::move(fine), std::move(cp));
+}
+
 // Every element by Bézier extraction: BB coefficient (a, b) = Σ_ij C_u(i, a) C_v(j, b) P_dof(i, j).
 std::vector<BezierPatch> extracted_patches(const Geometry& geometry, const BackendOptions&, BackendFacts&) {
   if (bspline::rational_space(geometry.space())) {
@@ -135,32 +153,35 @@ int patch_degree(const BackendOptions& o) {
   return p;
 }
 
+// The built-in geometry or patch file of --geometry.
+Geometry built_in_geometry(const BackendOptions& o) {
+  if (bspline::is_patch_file(o.geometry)) {
+    patch_degree(o);  // refuses a --degree that is not the file's
+    return bspline::read_patch(o.geometry);
+  }
+  const int p = o.degree == BackendOptions::kUnset ? 3 : o.degree;
+  if (o.geometry.empty() || o.geometry == "quarter-annulus") return bspline::make_quarter_annulus(p);
+  if (o.geometry == "l-shape") return bspline::make_l_shape(p);
+  if (o.geometry == "square") return bspline::make_rectangle(p);
+  if (o.geometry == "plate-with-hole") return bspline::make_plate_with_hole(p);
+  throw InputError("--geometry: unknown built-in geometry '" + o.geometry +
+                   "' (quarter-annulus, l-shape, square, plate-with-hole, or a patch file FILE.json)");
+}
+
 }  // namespace
 
 Backend bspline_backend() {
   Backend b;
   b.name = "bspline";
   b.description = "tensor-product B-splines and NURBS on one patch (a structured quad-grid net, the exact quarter annulus, or a patch file)";
-  b.options = {"degree", "refine-intervals", "geometry"};
+  b.options = {"degree", "refine-intervals", "geometry", "coarse-split"};
   b.default_degree = 3;
   b.default_refine = 4;
   b.from_net = [](const mesh::PolyMesh& net, const BackendOptions& o, BackendFacts&) {
-    return bspline::geometry_from_quad_grid(net, o.degree == BackendOptions::kUnset ? 3 : o.degree, o.net_name);
+    return split_patch(bspline::geometry_from_quad_grid(net, o.degree == BackendOptions::kUnset ? 3 : o.degree, o.net_name), o);
   };
   b.degree_of = patch_degree;
-  b.default_geometry = [](const BackendOptions& o) {
-    if (bspline::is_patch_file(o.geometry)) {
-      patch_degree(o);  // refuses a --degree that is not the file's
-      return bspline::read_patch(o.geometry);
-    }
-    const int p = o.degree == BackendOptions::kUnset ? 3 : o.degree;
-    if (o.geometry.empty() || o.geometry == "quarter-annulus") return bspline::make_quarter_annulus(p);
-    if (o.geometry == "l-shape") return bspline::make_l_shape(p);
-    if (o.geometry == "square") return bspline::make_rectangle(p);
-    if (o.geometry == "plate-with-hole") return bspline::make_plate_with_hole(p);
-    throw InputError("--geometry: unknown built-in geometry '" + o.geometry +
-                     "' (quarter-annulus, l-shape, square, plate-with-hole, or a patch file FILE.json)");
-  };
+  b.default_geometry = [](const BackendOptions& o) { return split_patch(built_in_geometry(o), o); };
   b.refine = refine_midpoints;
   b.refine_marked = refine_thb;
   b.default_quadrature = [](int degree) { return "gauss:" + std::to_string(degree + 1); };

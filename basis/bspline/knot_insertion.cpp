@@ -87,4 +87,29 @@ KnotVector insert_midpoints(const KnotVector& kv, const std::string& which) {
   return KnotVector(kv.degree(), std::move(t));
 }
 
+KnotVector split_intervals(const KnotVector& kv, int parts, const std::string& which) {
+  if (parts < 1) throw InputError(which + ": cannot split a knot interval into " + std::to_string(parts) + " parts");
+  std::vector<double> t;
+  const Index m = kv.size();
+  Index interval = 0;
+  for (Index i = 0; i < m; ++i) {
+    t.push_back(kv[i]);
+    if (i + 1 < m && kv[i] < kv[i + 1] && i >= kv.degree() && i < kv.num_basis()) {
+      double last = kv[i];
+      for (int k = 1; k < parts; ++k) {
+        const double x = kv[i] + (kv[i + 1] - kv[i]) * k / parts;
+        if (!(last < x && x < kv[i + 1])) {
+          throw InputError(which + " " + std::to_string(interval) + " [" + std::to_string(kv[i]) + ", " +
+                           std::to_string(kv[i + 1]) + "] is too narrow to split into " + std::to_string(parts) +
+                           " distinct parts in double precision");
+        }
+        t.push_back(x);
+        last = x;
+      }
+      ++interval;
+    }
+  }
+  return KnotVector(kv.degree(), std::move(t));
+}
+
 }  // namespace iga::basis::bspline

@@ -39,6 +39,11 @@ Eigen::SparseMatrix<double> refinement_matrix(const KnotVector& coarse, const Kn
 /// `which` + its 0-based index among the non-empty ones, when one is too narrow to halve (too_narrow_to_halve).
 KnotVector insert_midpoints(const KnotVector& kv, const std::string& which = "interval");
 
+/// The knot vector with every non-empty interval split into `parts` >= 1 equal parts (parts - 1 knots inserted
+/// at equal steps). InputError, naming the interval as `which` + its 0-based index among the non-empty ones, when
+/// one is too narrow for the new knots to be distinct in double precision.
+KnotVector split_intervals(const KnotVector& kv, int parts, const std::string& which = "interval");
+
 /// The message for a knot interval [a, b] whose midpoint rounds to one of its ends in double precision (`which`:
 /// "interval 3", in the user's numbering): halving it would repeat a knot instead.
 std::string too_narrow_to_halve(double a, double b, const std::string& which);

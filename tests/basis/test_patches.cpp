@@ -6,6 +6,7 @@
 
 #include "basis/bspline/patches.hpp"
 #include "basis/bspline/rational_space.hpp"
+#include "basis/registry.hpp"
 #include "core/error.hpp"
 #include "fem/assembler.hpp"
 #include "quadrature/rule_provider.hpp"
@@ -106,6 +107,33 @@ TEST(Patches, RefinementKeepsTheMap) {
     const double x = u01(rng), y = u01(rng);
     EXPECT_LE((map_point(coarse, x, y) - map_point(r.geometry, x, y)).norm(), 1e-13);
   }
+}
+
+// --coarse-split (BackendOptions::split_u/v) inserts knots only: the quarter annulus keeps its map, whose closed form
+// is |x(u, v)| = 1 + u (the radial factor is linear, the arc has unit radius); 1 × 3 elements. Split 2,2 is one
+// midpoint step: the same knots and control points as refine_uniform's.
+TEST(Patches, CoarseSplitKeepsTheMap) {
+  const basis::Backend& b = basis::backend("bspline");
+  basis::BackendOptions o;
+  o.split_v = 3;
+  const basis::Geometry coarse = make_quarter_annulus(3), split = b.default_geometry(o);
+  EXPECT_EQ(split.space().num_elements(), 3);
+  EXPECT_EQ(split.space().num_dofs(), 4 * 6);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (int k = 0; k < 100; ++k) {
+    const double x = u01(rng), y = u01(rng);
+    const Eigen::Vector3d p = map_point(split, x, y);
+    EXPECT_NEAR(p.head<2>().norm(), 1.0 + x, 1e-14);
+    EXPECT_LE((p - map_point(coarse, x, y)).norm(), 1e-14);
+  }
+  o.split_u = o.split_v = 2;
+  const basis::Geometry twice = b.default_geometry(o);
+  const basis::Geometry once = refine::refine_uniform(coarse, 1).geometry;
+  ASSERT_EQ(twice.space().num_dofs(), once.space().num_dofs());
+  EXPECT_LE((twice.control_points() - once.control_points()).cwiseAbs().maxCoeff(), 1e-15);
+  o.split_u = 0;
+  EXPECT_THROW(b.default_geometry(o), InputError);
 }
 
 TEST(QuadGrid, ControlNetFromMesh) {

@@ -244,6 +244,26 @@ TEST_F(IgaPoisson, RefineIntervals) {
   EXPECT_NE(run("--refine-intervals 0,x --vtu none --json none").code, 0);
 }
 
+// --coarse-split U,V inserts knots before refining: split 2,2 then 4 midpoint steps has the knots of 5 steps, so the
+// same space and the same solution; 1,3 has 3 × 4^k elements. Malformed values are one line.
+TEST_F(IgaPoisson, CoarseSplit) {
+  ASSERT_EQ(run("--quiet --problem harmonic --refine 5 --vtu none --json five.json").code, 0);
+  const Outcome r = run("--quiet --problem harmonic --refine 4 --coarse-split 2,2 --vtu none --json split.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json five = report("five.json"), split = report("split.json");
+  EXPECT_EQ(split["dofs"], five["dofs"]);
+  EXPECT_EQ(split["coarse_split"], nlohmann::json::array({2, 2}));
+  EXPECT_NEAR(split["l2_error"].get<double>(), five["l2_error"].get<double>(), 1e-9 * five["l2_error"].get<double>());
+  ASSERT_EQ(run("--quiet --refine 2 --coarse-split 1,3 --vtu none").code, 0);
+  EXPECT_EQ(report()["elements"], 3 * 16);
+  for (const char* bad : {"1,0", "3", "1,2,3", "1,x", "1,65", "-1,2"}) {
+    const Outcome b = run(std::string("--vtu none --json none --coarse-split ") + bad);
+    EXPECT_NE(b.code, 0) << bad;
+    EXPECT_NE(b.err.find("--coarse-split: '" + std::string(bad) + "' is not U,V"), std::string::npos) << b.err;
+    EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << b.err;
+  }
+}
+
 TEST_F(IgaPoisson, NoExactGivesNullErrors) {
   const Outcome r = run("--quiet --source 1 --dirichlet 0 --refine 2 --vtu none");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -271,6 +291,8 @@ TEST_F(IgaPoisson, BadInputGivesOneClearLine) {
       {"--basis polyhedral --mesh '" + std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj' --refine-intervals 0",
        "--refine-intervals is not an option of --basis polyhedral"},
       {"--presubdivide 1", "--presubdivide is not an option of --basis bspline"},
+      {"--basis cc --mesh '" + std::string(IGA_SOURCE_DIR) + "/data/meshes/square_evs.obj' --coarse-split 1,2",
+       "--coarse-split is not an option of --basis cc"},
   };
   for (const Case& c : cases) {
     const Outcome r = run("--vtu none --json none " + c.args);

@@ -100,6 +100,16 @@ for ranks, prefix in ((1, []), (2, mpirun)):
         check(abs(p[key] - s[key]) <= 1e-8 * s[key], f"mg on {ranks} rank(s): {key} {p[key]} against CHOLMOD's {s[key]}")
     iterations.append(p["solver_iterations"])
 check(len(iterations) == 2 and iterations[0] == iterations[1] and 0 < iterations[0] <= 20, f"mg iterations {iterations}")
+# On a patch split by --coarse-split 1,4 the split patch is the coarsest level (refine + 1 levels, not more).
+split = ["--coarse-split", "1,4", "--vtu", "none"]
+rs = run([exe] + common + split + ["--json", "split_cholmod.json"])
+rm = run([exe] + common + split + ["--solver", "mg", "--json", "split_mg.json"])
+check(rs.returncode == 0 and rm.returncode == 0, f"mg on a split patch: exit {rs.returncode}, {rm.returncode}: {rm.stderr}")
+if rs.returncode == 0 and rm.returncode == 0:
+    s, p = json.load(open(os.path.join(work, "split_cholmod.json"))), json.load(open(os.path.join(work, "split_mg.json")))
+    check(s["elements"] == 4 * 4 ** 4 and p["multigrid"]["levels"] == 5 and p["coarse_split"] == [1, 4],
+          f"mg on a split patch: elements {s['elements']}, multigrid {p.get('multigrid')}")
+    check(abs(p["l2_error"] - s["l2_error"]) <= 1e-8 * s["l2_error"], f"mg on a split patch: {p['l2_error']} {s['l2_error']}")
 r = run(mpirun + [exe] + common + ["--solver", "mg", "--petsc-options", "-ksp_max_it 1", "--vtu", "none", "--json", "none"])
 lines = r.stderr.strip().splitlines()
 check(r.returncode != 0 and len(lines) == 1 and "did not converge: DIVERGED_ITS after 1 iterations (residual norm" in lines[0],
