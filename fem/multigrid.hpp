@@ -9,18 +9,20 @@
 
 namespace iga::fem {
 
-/// One level's free dofs in the numbering of its reduced system.
+/// One level's free dofs in the numbering of its reduced system. The finest level's system may keep rows for its
+/// constrained dofs (rows of the identity, which no free dof couples to: fem/petsc_system.cpp with selected
+/// conditions); then those rows have no dof here and the level's size is that of the whole system.
 struct MultigridLevel {
-  /// Per field dof (components × the space's dofs, interleaved: d·i + c): its index among the level's free dofs,
-  /// −1 for a constrained one.
+  /// Per field dof (components × the space's dofs, interleaved: d·i + c): its row in the level's system (on the
+  /// coarse levels: its index among the level's free dofs), −1 for a constrained one.
   std::vector<Index> reduced;
-  /// ranks + 1 entries: rank r holds the reduced indices [offsets[r], offsets[r + 1]).
+  /// ranks + 1 entries: rank r holds the rows [offsets[r], offsets[r + 1]) of the level's system.
   std::vector<Index> offsets;
   /// The level's homogeneous constraints u_k + Σ_i coupling(k, i) u_i = 0 of the constrained field dofs k =
   /// constrained[row] (DirichletConditions: coupled ones; an empty coupling: the constrained dofs are zero).
   std::vector<Index> constrained;
   Eigen::SparseMatrix<double, Eigen::RowMajor> coupling;
-  Index free() const { return offsets.back(); }
+  Index free() const { return offsets.back(); }  ///< the level system's size
   int owner(Index reduced_index) const;  ///< the rank holding a reduced index
 };
 

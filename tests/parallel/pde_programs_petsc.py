@@ -46,8 +46,11 @@ for exe, args in ((biharmonic, ["--refine", "4", "--simply-supported", "v0"]), (
           f"{name}: the .pvtu and its two pieces: {p.get('vtu')}")
 
 # --solver mg (geometric multigrid on the --refine steps; elasticity: the prolongation per component) on 2 ranks:
-# the same error figures as CHOLMOD's to 1e-8, and the report's multigrid object.
-for exe, args in ((biharmonic, ["--refine", "4", "--simply-supported", "v0"]), (elasticity, ["--refine", "4"])):
+# the same error figures as CHOLMOD's to 1e-8, and the report's multigrid object. The biharmonic system's condition
+# number (h^-4) makes the default relative residual 1e-12 leave an algebraic error near 1e-8 of the L2 error (measured
+# 5e-9 and 1.1e-8 for two equally valid orders of the same operations), so it is solved to 1e-14 (measured 7e-11).
+for exe, args in ((biharmonic, ["--refine", "4", "--simply-supported", "v0", "--petsc-options", "-ksp_rtol 1e-14"]),
+                  (elasticity, ["--refine", "4"])):
     name = os.path.basename(exe)
     r = run(mpirun + [exe] + args + ["--quiet", "--solver", "mg", "--vtu", "none", "--json", name + "_mg.json"])
     check(r.returncode == 0, f"{name} --solver mg on 2 ranks: exit {r.returncode}: {r.stderr}")
