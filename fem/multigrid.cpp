@@ -113,7 +113,7 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> reduced_prolongation(const Eigen::S
       if (row >= 0 && it.value() != 0.0) t.emplace_back(row, col, it.value());
     }
   }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> out(fine.free(), coarse.free());
+  Eigen::SparseMatrix<double, Eigen::RowMajor> out(fine.size(), coarse.size());
   out.setFromTriplets(t.begin(), t.end());
   return out;
 }

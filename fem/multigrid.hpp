@@ -22,7 +22,7 @@ struct MultigridLevel {
   /// constrained[row] (DirichletConditions: coupled ones; an empty coupling: the constrained dofs are zero).
   std::vector<Index> constrained;
   Eigen::SparseMatrix<double, Eigen::RowMajor> coupling;
-  Index free() const { return offsets.back(); }  ///< the level system's size
+  Index size() const { return offsets.back(); }  ///< the rows of the level's system
   int owner(Index reduced_index) const;  ///< the rank holding a reduced index
 };
 

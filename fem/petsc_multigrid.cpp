@@ -23,8 +23,8 @@ void interpolation(MPI_Comm comm, int rank, const Eigen::SparseMatrix<double, Ei
       ++(it.col() >= clo && it.col() < chi ? d_nnz : o_nnz)[static_cast<std::size_t>(i - lo)];
     }
   }
-  check(MatCreateAIJ(comm, static_cast<PetscInt>(hi - lo), static_cast<PetscInt>(chi - clo), static_cast<PetscInt>(fine.free()),
-                     static_cast<PetscInt>(coarse.free()), 0, d_nnz.data(), 0, o_nnz.data(), out),
+  check(MatCreateAIJ(comm, static_cast<PetscInt>(hi - lo), static_cast<PetscInt>(chi - clo), static_cast<PetscInt>(fine.size()),
+                     static_cast<PetscInt>(coarse.size()), 0, d_nnz.data(), 0, o_nnz.data(), out),
         "MatCreateAIJ");
   std::vector<PetscInt> cols;
   for (Index i = lo; i < hi; ++i) {
