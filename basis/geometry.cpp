@@ -11,6 +11,12 @@
 namespace iga::basis {
 
 Geometry::Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_points)
+    : Geometry(std::move(space), std::move(control_points), nullptr) {}
+
+Geometry::Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_points, const Geometry& same_map)
+    : Geometry(std::move(space), std::move(control_points), &same_map) {}
+
+Geometry::Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_points, const Geometry* same_map)
     : space_(std::move(space)), control_points_(std::move(control_points)) {
   if (!space_) throw InputError("geometry: no space given");
   if (control_points_.rows() != space_->num_dofs()) {
@@ -22,7 +28,11 @@ Geometry::Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_p
                      std::to_string(control_points_.cols()));
   }
   if (!control_points_.allFinite()) throw InputError("geometry: a control point has a non-finite coordinate");
-  if (dim() == 2) orientation_ = majority_orientation();
+  if (same_map && same_map->dim() != dim()) {
+    throw InputError("geometry: " + std::to_string(dim()) + " coordinates for the same map as one with " +
+                     std::to_string(same_map->dim()));
+  }
+  if (dim() == 2) orientation_ = same_map ? same_map->orientation_ : majority_orientation();
 }
 
 int Geometry::majority_orientation() const {

@@ -26,6 +26,10 @@ class Geometry {
   /// control_points: num_dofs × dim, dim 2 (planar) or 3 (surface). Throws InputError on a size mismatch
   /// or non-finite coordinates.
   Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_points);
+  /// The map of `same_map` in a space that contains its space (control_points: its coefficients there, e.g.
+  /// prolongated by a refinement): the same map, so its orientation carries over instead of being sampled again
+  /// over every element. The caller vouches for the sameness.
+  Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_points, const Geometry& same_map);
 
   const Space& space() const { return *space_; }
   const std::shared_ptr<const Space>& space_ptr() const { return space_; }
@@ -55,6 +59,7 @@ class Geometry {
   std::string validity() const;
 
  private:
+  Geometry(std::shared_ptr<const Space> space, Eigen::MatrixXd control_points, const Geometry* same_map);
   int majority_orientation() const;
   void finish(Index e, Index q, GeometryValues& out, bool check) const;
   std::shared_ptr<const Space> space_;

@@ -26,17 +26,19 @@ Refinement refine_marked_geometry(const Geometry& geometry, const std::shared_pt
   const Eigen::MatrixXd coarse_cp = permuted ? Eigen::MatrixXd(to_coarse * geometry.control_points()) : geometry.control_points();
   Eigen::SparseMatrix<double> p;
   Eigen::MatrixXd cp;
-  if (with_prolongation) {
+  if (with_prolongation || r.space->built_from(*coarse)) {  // an incremental build's prolongation is cheap
     p = r.space->prolongation_from(*coarse);
     cp = p * coarse_cp;
-    if (permuted) {
+    if (!with_prolongation) {
+      p = Eigen::SparseMatrix<double>();
+    } else if (permuted) {
       Eigen::SparseMatrix<double> composed = p * to_coarse;
       p.swap(composed);
     }
   } else {
     cp = r.space->coefficients_from(*coarse, coarse_cp);
   }
-  return {Geometry(r.space, std::move(cp)), std::move(p), true};
+  return {Geometry(r.space, std::move(cp), geometry), std::move(p), true};
 }
 
 Refinement refine_all_geometry(const Geometry& geometry, int steps, BackendFacts& facts) {

@@ -7,35 +7,6 @@
 
 namespace iga::basis::hierarchical {
 
-namespace {
-
-// A function of one level: whether its support lies in Ω^l ("inside") and in Ω^{l+1} ("inside_next"), and its
-// dof (or -1) once known.
-struct FunctionState {
-  signed char inside = -1, inside_next = -1;
-  Index dof = -2;  // -2: not decided, -1: not active
-};
-
-// Rows of m whose entries are all below `tiny` (functions that vanish on the cell after truncation) are
-// removed, with their ids.
-void drop_zero_rows(std::vector<Index>& ids, Eigen::MatrixXd& m) {
-  constexpr double tiny = 1e-14;
-  Index kept = 0;
-  for (Index r = 0; r < m.rows(); ++r) {
-    if (m.row(r).cwiseAbs().maxCoeff() > tiny) {
-      if (kept != r) {
-        m.row(kept) = m.row(r);
-        ids[static_cast<std::size_t>(kept)] = ids[static_cast<std::size_t>(r)];
-      }
-      ++kept;
-    }
-  }
-  ids.resize(static_cast<std::size_t>(kept));
-  m.conservativeResize(kept, Eigen::NoChange);
-}
-
-}  // namespace
-
 std::string to_string(Key k) {
   if (k == 0) return "0";
   const bool negative = k < 0;
@@ -105,105 +76,6 @@ ElementKind HierarchicalSpace::kind(Index e) const {
 std::span<const Index> HierarchicalSpace::dofs(Index e) const {
   const Element& el = elements_[static_cast<std::size_t>(e)];
   return {dofs_.data() + el.dof_begin, static_cast<std::size_t>(el.dof_end - el.dof_begin)};
-}
-
-void HierarchicalSpace::build() {
-  const LevelHierarchy& h = *hierarchy_;
-  const int nf = h.max_local_functions();
-  std::vector<std::unordered_map<Key, FunctionState, KeyHash>> state(refined_.size() + 2);
-  std::vector<Key> scratch;
-  auto function_state = [&](int level, Key f) -> FunctionState& {
-    FunctionState& s = state[static_cast<std::size_t>(level)][f];
-    if (s.inside < 0) {
-      h.support(level, f, scratch);
-      bool inside = true, next = true;
-      for (Key c : scratch) {
-        if (inside && !exists(level, c)) inside = false;
-        if (next && !is_refined(level, c)) next = false;
-      }
-      s.inside = inside ? 1 : 0;
-      s.inside_next = next ? 1 : 0;
-    }
-    return s;
-  };
-  leaf_index_.assign(refined_.size() + 1, {});
-  std::vector<Key> fbuf(static_cast<std::size_t>(nf)), child_buf(static_cast<std::size_t>(nf));
-  Eigen::MatrixXd k;
-  // Depth-first over the forest. At a cell of level l, `rows` are the dofs of coarser levels that do not vanish
-  // there and m their coefficients in the level's local functions; the level's active functions join as unit
-  // rows. Going to a child: m K, then truncation (columns of the child level's functions with supp ⊆ Ω^{l+1}
-  // are zeroed).
-  auto visit = [&](auto&& self, int level, Key cell, std::vector<Index> rows, Eigen::MatrixXd m) -> void {
-    const int nloc = h.local_functions(level, cell, fbuf.data());
-    const Index inherited = static_cast<Index>(rows.size());
-    for (int j = 0; j < nloc; ++j) {
-      FunctionState& s = function_state(level, fbuf[static_cast<std::size_t>(j)]);
-      if (s.dof == -2) {
-        if (s.inside && !s.inside_next) {
-          s.dof = static_cast<Index>(dof_level_.size());
-          dof_level_.push_back(level);
-          dof_function_.push_back(fbuf[static_cast<std::size_t>(j)]);
-          dof_home_.push_back(-1);
-          dof_home_local_.push_back(-1);
-        } else {
-          s.dof = -1;
-        }
-      }
-      if (s.dof >= 0) rows.push_back(s.dof);
-    }
-    const Index total = static_cast<Index>(rows.size());
-    m.conservativeResize(total, nloc);
-    if (inherited == 0) m.setZero();
-    m.bottomRows(total - inherited).setZero();
-    for (int j = 0, r = static_cast<int>(inherited); j < nloc; ++j) {
-      const FunctionState& s = state[static_cast<std::size_t>(level)][fbuf[static_cast<std::size_t>(j)]];
-      if (s.dof >= 0) m(r++, j) = 1.0;
-    }
-    if (!is_refined(level, cell)) {
-      drop_zero_rows(rows, m);
-      Element el;
-      el.level = level;
-      el.cell = cell;
-      el.num_local = nloc;
-      el.dof_begin = static_cast<Index>(dofs_.size());
-      dofs_.insert(dofs_.end(), rows.begin(), rows.end());
-      el.dof_end = static_cast<Index>(dofs_.size());
-      const bool identity = inherited == 0 && total == nloc;
-      if (!identity) {
-        el.coeff_begin = static_cast<Index>(coeffs_.size());
-        coeffs_.insert(coeffs_.end(), m.data(), m.data() + m.size());
-      }
-      const Index e = static_cast<Index>(elements_.size());
-      elements_.push_back(el);
-      leaf_index_[static_cast<std::size_t>(level)][cell] = e;
-      max_local_ = std::max<Index>(max_local_, static_cast<Index>(rows.size()));
-      num_levels_ = std::max(num_levels_, level + 1);
-      for (int j = 0; j < nloc; ++j) {
-        const Index d = state[static_cast<std::size_t>(level)][fbuf[static_cast<std::size_t>(j)]].dof;
-        if (d >= 0 && dof_home_[static_cast<std::size_t>(d)] < 0) {
-          dof_home_[static_cast<std::size_t>(d)] = e;
-          dof_home_local_[static_cast<std::size_t>(d)] = j;
-        }
-      }
-      return;
-    }
-    for (int slot = 0; slot < 4; ++slot) {
-      const Key child = h.child(level, cell, slot);
-      h.refinement(level, cell, slot, k);
-      Eigen::MatrixXd mc = m * k;
-      const int nc = h.local_functions(level + 1, child, child_buf.data());
-      for (int j = 0; j < nc; ++j) {
-        if (function_state(level + 1, child_buf[static_cast<std::size_t>(j)]).inside) mc.col(j).setZero();
-      }
-      std::vector<Index> rc = rows;
-      drop_zero_rows(rc, mc);
-      self(self, level + 1, child, std::move(rc), std::move(mc));
-    }
-  };
-  for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, Key{c}, {}, Eigen::MatrixXd());
-  for (std::size_t d = 0; d < dof_home_.size(); ++d) {
-    if (dof_home_[d] < 0) throw NumericalError("hierarchical space: dof " + std::to_string(d) + " has no leaf of its level");
-  }
 }
 
 void HierarchicalSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
@@ -347,6 +219,7 @@ Eigen::MatrixXd HierarchicalSpace::from_level0(const Eigen::MatrixXd& c0, Index 
 }
 
 Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const HierarchicalSpace& coarse) const {
+  if (built_from(coarse)) return prolongation_from_previous(coarse);
   const LevelHierarchy& h = *hierarchy_;
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::MatrixXd k;

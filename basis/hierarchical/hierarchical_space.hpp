@@ -10,14 +10,16 @@
 // On every leaf, each function is stored as its coefficients in the leaf level's local functions (per-element
 // extraction: the level's evaluator then gives values and derivatives).
 //
-// Dofs are numbered by first appearance in the depth-first traversal. Each dof's "home" is a leaf of its own level in its
+// Dofs are numbered by first appearance in the elements' dof lists, in element order. Each dof's "home" is a leaf of its own level in its
 // support; reading there the function's local coefficient is a dual functional of the THB basis (Speleers and
 // Manni 2016): this gives exact coefficients of coarse-level splines (the geometry) and the prolongation
 // between nested hierarchical spaces.
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <functional>
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -29,11 +31,23 @@ namespace iga::basis::hierarchical {
 
 /// The refined cells of each level (level l: cells of level l whose four children exist).
 using RefinedCells = std::vector<std::unordered_set<Key, KeyHash>>;
+/// A cell of one level.
+struct LevelCell {
+  int level = 0;
+  Key cell = 0;
+};
 
 class HierarchicalSpace final : public Space {
  public:
   /// InputError when a refined cell of level l >= 1 is not in Ω^l (its parent is not refined).
   HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hierarchy, RefinedCells refined);
+  /// The same space as HierarchicalSpace(previous.hierarchy_ptr(), refined), built from `previous` (refined ⊇
+  /// previous.refined(), `added` the cells refined since) at a cost that follows the change, not the mesh: a
+  /// function's selection or truncation can change only if its support meets a newly refined cell or one of its
+  /// children, so only the subtrees under the cells of those supports are recomputed (with the paths down to
+  /// them); every other leaf keeps its element data, copied. prolongation_from(previous) then computes only the
+  /// rows of the dofs whose home leaf was recomputed (the others are unit rows).
+  HierarchicalSpace(const HierarchicalSpace& previous, RefinedCells refined, std::span<const LevelCell> added);
 
   std::string name() const override { return hierarchy_->name(); }
   Index num_dofs() const override { return static_cast<Index>(dof_level_.size()); }
@@ -79,6 +93,11 @@ class HierarchicalSpace final : public Space {
   Eigen::SparseMatrix<double> prolongation_from(const HierarchicalSpace& coarse) const;
   /// prolongation_from(coarse) × c without forming the matrix (num_dofs × c.cols()): for control points.
   Eigen::MatrixXd coefficients_from(const HierarchicalSpace& coarse, const Eigen::MatrixXd& c) const;
+  /// Whether this space was built from `previous` by the incremental constructor (prolongation_from(previous)
+  /// then costs what the change costs).
+  bool built_from(const HierarchicalSpace& previous) const {
+    return previous_serial_ != 0 && previous.serial_ == previous_serial_;
+  }
 
  private:
   struct Element {
@@ -88,7 +107,23 @@ class HierarchicalSpace final : public Space {
     Index coeff_begin = -1;            // into coeffs_: (dofs × local functions) column-major; -1: identity
     int num_local = 0;                 // level-local functions on the cell
   };
+  using CellSets = std::vector<std::unordered_set<Key, KeyHash>>;
   void build();
+  void build_from(const HierarchicalSpace& previous, std::span<const LevelCell> added);
+  /// The depth-first pass that makes the elements (hierarchical_build.cpp); with `previous`, the subtrees that
+  /// hold no cell of `dirty` and no path to one are copied from it.
+  void traverse(const HierarchicalSpace* previous, const CellSets* dirty, const CellSets* on_path);
+  /// Appends the previous space's leaves under cell `cell` of level `level` (a subtree both spaces share).
+  void copy_subtree(const HierarchicalSpace& previous, int level, Key cell);
+  /// The dof of function `function` of level `level`, or -1 when it is not active (`cells`: scratch).
+  Index dof_of(int level, Key function, std::vector<Key>& cells) const;
+  /// After a build: dofs renumbered by first appearance in the elements' lists (dof_level_/dof_function_ are
+  /// indexed by the build's provisional ids), their homes, the leaf index, max_local_ and num_levels_.
+  void finish(const std::vector<int>& level_of, const std::vector<Key>& function_of);
+  /// The leaf's coefficients (its dofs × its level's local functions).
+  Eigen::MatrixXd element_coefficients(const Element& el) const;
+  /// prolongation_from(previous) when this space was built from it: unit rows for dofs at home in copied leaves.
+  Eigen::SparseMatrix<double> prolongation_from_previous(const HierarchicalSpace& previous) const;
   /// Coefficients of a spline in this space from its local coefficients on the first cells (down every path
   /// of the forest) where source(level, cell, v) gives them, refined down to the leaves.
   Eigen::MatrixXd coefficients_by_descent(Index columns,
@@ -106,6 +141,9 @@ class HierarchicalSpace final : public Space {
   std::vector<std::unordered_map<Key, Index, KeyHash>> leaf_index_;  // per level: cell -> element
   Index max_local_ = 0;
   int num_levels_ = 1;
+  std::uint64_t serial_ = 0;           // distinct for every space built in the process
+  std::uint64_t previous_serial_ = 0;  // the space this one was built from (0: none)
+  std::vector<Index> copied_from_;     // per element: the previous space's element it copies, or -1
 };
 
 }  // namespace iga::basis::hierarchical

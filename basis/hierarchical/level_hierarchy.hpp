@@ -6,6 +6,7 @@
 // cell. Tensor-product B-splines on dyadically refined knots implement it in basis/thb; the hierarchical space
 // itself (hierarchical_space.hpp) only talks to this interface.
 #include <Eigen/Core>
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <string>
@@ -63,6 +64,22 @@ class LevelHierarchy {
   virtual int max_local_functions() const = 0;
   /// The cells of the level on which the function is non-zero (its support), in any order.
   virtual void support(int level, Key function, std::vector<Key>& cells) const = 0;
+  /// The support extension of a cell: the cells of the level on which some function non-zero on the cell is
+  /// non-zero (the union of their supports), in any order, each once. Incremental builds of hierarchical spaces
+  /// rest on it, and on its nesting: the support extension of a child lies in the children of the cells of its
+  /// parent's (true of dyadic B-splines of any degree and of Catmull–Clark, checked by
+  /// tests/basis/test_hierarchical_incremental).
+  virtual void support_extension(int level, Key cell, std::vector<Key>& cells) const {
+    std::vector<Key> functions(static_cast<std::size_t>(max_local_functions())), one;
+    functions.resize(static_cast<std::size_t>(local_functions(level, cell, functions.data())));
+    cells.clear();
+    for (Key f : functions) {
+      support(level, f, one);
+      cells.insert(cells.end(), one.begin(), one.end());
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  }
   /// Two-scale relation on one child: parent-local function i restricted to the child in `slot` equals
   /// Σ_j k(i, j) × child-local function j (k: parent local × child local).
   virtual void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const = 0;

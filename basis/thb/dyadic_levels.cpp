@@ -168,6 +168,21 @@ void DyadicBsplineLevels::support(int level, Key function, std::vector<Key>& cel
   }
 }
 
+void DyadicBsplineLevels::support_extension(int level, Key cell, std::vector<Key>& cells) const {
+  // The box from the first local function's first interval to the last one's last, in each direction.
+  const Key nx = u_.num_intervals(level);
+  const Key ix = cell % nx, iy = cell / nx;
+  Key x0 = 0, x1 = 0, y0 = 0, y1 = 0, unused = 0;
+  u_.support(level, u_.span(level, ix) - u_.degree(), x0, unused);
+  u_.support(level, u_.span(level, ix), unused, x1);
+  v_.support(level, v_.span(level, iy) - v_.degree(), y0, unused);
+  v_.support(level, v_.span(level, iy), unused, y1);
+  cells.clear();
+  for (Key y = y0; y <= y1; ++y) {
+    for (Key x = x0; x <= x1; ++x) cells.push_back(x + nx * y);
+  }
+}
+
 void DyadicBsplineLevels::refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const {
   const Key nx = u_.num_intervals(level);
   const Key ix = cell % nx, iy = cell / nx;

@@ -70,6 +70,7 @@ class DyadicBsplineLevels final : public hierarchical::LevelHierarchy {
   int max_local_functions() const override { return (u_.degree() + 1) * (v_.degree() + 1); }
   std::optional<int> polynomial_degree(int, Key) const override { return std::max(u_.degree(), v_.degree()); }
   void support(int level, Key function, std::vector<Key>& cells) const override;
+  void support_extension(int level, Key cell, std::vector<Key>& cells) const override;
   void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const override;
   void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   int boundary_part(int level, Key cell, int side) const override;

@@ -1,2 +1,3 @@
 iga_add_test(test_thb basis/test_thb.cpp)
 iga_add_test(test_second_derivatives fem/test_second_derivatives.cpp)
+iga_add_test(test_hierarchical_incremental basis/test_hierarchical_incremental.cpp)

@@ -44,3 +44,4 @@ inline const char* build_path(const char* key) {
 #define IGA_KNOTS_EXE (::iga::test::build_path("IGA_KNOTS_EXE"))
 #define BENCH_BEM_EXE (::iga::test::build_path("BENCH_BEM_EXE"))
 #define BENCH_HALFBOX_EXE (::iga::test::build_path("BENCH_HALFBOX_EXE"))
+#define BENCH_THB_REFINE_EXE (::iga::test::build_path("BENCH_THB_REFINE_EXE"))

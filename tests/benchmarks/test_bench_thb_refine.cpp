@@ -1,0 +1,52 @@
+// bench-thb-refine on small meshes end to end: exit code 0 (the program itself refuses to report when the
+// incremental build and the whole build of the same refined cells differ in dofs or prolongation entries), and a
+// JSON report whose counts are the closed forms of its set-up: 4^K elements at K uniform refinements of one
+// bi-quadratic interval, the marked cells refined without any closure (the mesh is uniform), and the dofs after
+// refining the corner cell.
+#include "support/paths.hpp"
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+TEST(BenchThbRefine, SmallRunReportsEveryMeasurement) {
+  const fs::path dir = fs::temp_directory_path() / ("bench_thb_refine_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string cmd = "cd '" + dir.string() + "' && '" + BENCH_THB_REFINE_EXE +
+                          "' --min-refine 3 --max-refine 4 --repeat 1 --marked 1 5 40 --json out.json > stdout.txt 2> err.txt";
+  const int status = std::system(cmd.c_str());
+  std::stringstream err;
+  err << std::ifstream(dir / "err.txt").rdbuf();
+  ASSERT_EQ(WEXITSTATUS(status), 0) << err.str();
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "out.json"));
+  fs::remove_all(dir);
+  // 64 elements: 1 and 5 marked (40 is above a quarter); 256 elements: all three.
+  ASSERT_EQ(j["runs"].size(), 5u);
+  const int elements[] = {64, 64, 256, 256, 256}, marked[] = {1, 5, 1, 5, 40};
+  for (std::size_t i = 0; i < 5; ++i) {
+    const nlohmann::json& r = j["runs"][i];
+    EXPECT_EQ(r["elements"], elements[i]);
+    EXPECT_EQ(r["marked"], marked[i]);
+    EXPECT_EQ(r["refined_cells"], marked[i]);
+    EXPECT_TRUE(r["incremental"].get<bool>());
+    // (2^K + 2)² functions before; refining the corner cell adds the 2 × 2 fine functions supported in it (open
+    // knots: supports [0, h/2] and [0, h] in each direction) and removes the coarse corner function (support [0, h]²).
+    const int before = elements[i] == 64 ? 100 : 324;
+    if (marked[i] == 1) {
+      EXPECT_EQ(r["dofs"].get<int>(), before + 3);
+    }
+    EXPECT_GT(r["dofs"].get<int>(), before);
+    for (const char* k : {"refine_seconds", "prolongation_seconds", "whole_build_seconds", "whole_prolongation_seconds"}) {
+      const double v = r[k].get<double>();
+      EXPECT_TRUE(std::isfinite(v) && v > 0) << k << " = " << v;
+    }
+  }
+}
