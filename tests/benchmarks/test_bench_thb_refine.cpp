@@ -4,15 +4,14 @@
 // bi-quadratic interval, the marked cells refined without any closure (the mesh is uniform), and the dofs after
 // refining the corner cell.
 #include "support/paths.hpp"
+#include "support/program_run.hpp"
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -20,12 +19,9 @@ namespace fs = std::filesystem;
 TEST(BenchThbRefine, SmallRunReportsEveryMeasurement) {
   const fs::path dir = fs::temp_directory_path() / ("bench_thb_refine_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string cmd = "cd '" + dir.string() + "' && '" + BENCH_THB_REFINE_EXE +
-                          "' --min-refine 3 --max-refine 4 --repeat 1 --marked 1 5 40 --json out.json > stdout.txt 2> err.txt";
-  const int status = std::system(cmd.c_str());
-  std::stringstream err;
-  err << std::ifstream(dir / "err.txt").rdbuf();
-  ASSERT_EQ(WEXITSTATUS(status), 0) << err.str();
+  const auto run = iga::test::run_program(dir, BENCH_THB_REFINE_EXE,
+                                          "--min-refine 3 --max-refine 4 --repeat 1 --marked 1 5 40 --json out.json");
+  ASSERT_EQ(run.code, 0) << run.err;
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "out.json"));
   fs::remove_all(dir);
   // 64 elements: 1 and 5 marked (40 is above a quarter); 256 elements: all three.
