@@ -94,6 +94,12 @@ void HierarchicalSpace::build_from(const HierarchicalSpace& previous, std::span<
       }
     }
   }
+  // Every refined leaf gives way to four: room for the copies without regrowing.
+  const std::size_t more = 3 * added.size();
+  elements_.reserve(previous.elements_.size() + more);
+  copied_from_.reserve(elements_.capacity());
+  dofs_.reserve(previous.dofs_.size() + more * static_cast<std::size_t>(previous.max_local_));
+  coeffs_.reserve(previous.coeffs_.size());
   traverse(&previous, &dirty, &on_path);
   previous_serial_ = previous.serial_;
 }
@@ -148,12 +154,6 @@ void HierarchicalSpace::traverse(const HierarchicalSpace* previous, const CellSe
   // Provisional dof ids: the previous space's dofs keep theirs, new ones follow; finish() renumbers.
   std::vector<int> level_of = previous ? previous->dof_level_ : std::vector<int>();
   std::vector<Key> function_of = previous ? previous->dof_function_ : std::vector<Key>();
-  if (previous) {
-    elements_.reserve(previous->elements_.size() + 4 * previous->elements_.size() / 3);
-    dofs_.reserve(previous->dofs_.size() + 4 * previous->dofs_.size() / 3);
-    coeffs_.reserve(previous->coeffs_.size());
-    copied_from_.reserve(elements_.capacity());
-  }
   std::vector<std::unordered_map<Key, FunctionState, KeyHash>> state(refined_.size() + 2);
   std::vector<Key> scratch;
   auto function_state = [&](int level, Key f) -> FunctionState& {
@@ -213,18 +213,7 @@ void HierarchicalSpace::traverse(const HierarchicalSpace* previous, const CellSe
     }
     if (!is_refined(level, cell)) {
       drop_zero_rows(rows, m);
-      Element el;
-      el.level = level;
-      el.cell = cell;
-      el.num_local = nloc;
-      el.dof_begin = static_cast<Index>(dofs_.size());
-      dofs_.insert(dofs_.end(), rows.begin(), rows.end());
-      el.dof_end = static_cast<Index>(dofs_.size());
-      if (inherited != 0 || total != nloc) {
-        el.coeff_begin = static_cast<Index>(coeffs_.size());
-        coeffs_.insert(coeffs_.end(), m.data(), m.data() + m.size());
-      }
-      elements_.push_back(el);
+      add_leaf(level, cell, rows, m, inherited == 0 && total == nloc);
       if (previous) copied_from_.push_back(-1);
       return;
     }
@@ -243,6 +232,22 @@ void HierarchicalSpace::traverse(const HierarchicalSpace* previous, const CellSe
   };
   for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, Key{c}, false, {}, Eigen::MatrixXd());
   finish(level_of, function_of);
+}
+
+void HierarchicalSpace::add_leaf(int level, Key cell, const std::vector<Index>& rows, const Eigen::MatrixXd& m,
+                                 bool identity) {
+  Element el;
+  el.level = level;
+  el.cell = cell;
+  el.num_local = static_cast<int>(m.cols());
+  el.dof_begin = static_cast<Index>(dofs_.size());
+  dofs_.insert(dofs_.end(), rows.begin(), rows.end());
+  el.dof_end = static_cast<Index>(dofs_.size());
+  if (!identity) {
+    el.coeff_begin = static_cast<Index>(coeffs_.size());
+    coeffs_.insert(coeffs_.end(), m.data(), m.data() + m.size());
+  }
+  elements_.push_back(el);
 }
 
 void HierarchicalSpace::finish(const std::vector<int>& level_of, const std::vector<Key>& function_of) {

@@ -42,11 +42,11 @@ class HierarchicalSpace final : public Space {
   /// InputError when a refined cell of level l >= 1 is not in Ω^l (its parent is not refined).
   HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hierarchy, RefinedCells refined);
   /// The same space as HierarchicalSpace(previous.hierarchy_ptr(), refined), built from `previous` (refined ⊇
-  /// previous.refined(), `added` the cells refined since) at a cost that follows the change, not the mesh: a
-  /// function's selection or truncation can change only if its support meets a newly refined cell or one of its
-  /// children, so only the subtrees under the cells of those supports are recomputed (with the paths down to
-  /// them); every other leaf keeps its element data, copied. prolongation_from(previous) then computes only the
-  /// rows of the dofs whose home leaf was recomputed (the others are unit rows).
+  /// previous.refined(), `added` the cells refined since): a function's selection or truncation can change only
+  /// if its support meets a newly refined cell or one of its children, so only the subtrees under the newly
+  /// refined cells' support extensions are recomputed (with the paths down to them); every other leaf keeps its
+  /// element data, copied. prolongation_from(previous) then computes only the rows of the dofs whose home leaf was
+  /// recomputed (the others are unit rows). InputError when `added` does not account for the new refined cells.
   HierarchicalSpace(const HierarchicalSpace& previous, RefinedCells refined, std::span<const LevelCell> added);
 
   std::string name() const override { return hierarchy_->name(); }
@@ -113,6 +113,9 @@ class HierarchicalSpace final : public Space {
   /// The depth-first pass that makes the elements (hierarchical_build.cpp); with `previous`, the subtrees that
   /// hold no cell of `dirty` and no path to one are copied from it.
   void traverse(const HierarchicalSpace* previous, const CellSets* dirty, const CellSets* on_path);
+  /// Appends a leaf: its dofs (`rows`, provisional ids) and their coefficients in the level's local functions
+  /// (`m`, not stored when the identity).
+  void add_leaf(int level, Key cell, const std::vector<Index>& rows, const Eigen::MatrixXd& m, bool identity);
   /// Appends the previous space's leaves under cell `cell` of level `level` (a subtree both spaces share).
   void copy_subtree(const HierarchicalSpace& previous, int level, Key cell);
   /// The dof of function `function` of level `level`, or -1 when it is not active (`cells`: scratch).
