@@ -52,7 +52,7 @@ void HierarchicalSpace::build() { traverse(nullptr, nullptr, nullptr); }
 HierarchicalSpace::HierarchicalSpace(const HierarchicalSpace& previous, RefinedCells refined,
                                      std::span<const LevelCell> added)
     : hierarchy_(previous.hierarchy_), refined_(std::move(refined)) {
-  while (!refined_.empty() && refined_.back().empty()) refined_.pop_back();
+  trim_and_check_depth();
   std::size_t count = 0, previous_count = 0;
   for (const auto& level : refined_) count += level.size();
   for (const auto& level : previous.refined_) previous_count += level.size();
@@ -65,11 +65,6 @@ HierarchicalSpace::HierarchicalSpace(const HierarchicalSpace& previous, RefinedC
       throw InputError("hierarchical space: added cell " + to_string(c.cell) + " of level " + std::to_string(c.level) +
                        " is not a newly refined cell of the refined region");
     }
-  }
-  if (static_cast<int>(refined_.size()) > hierarchy_->max_level()) {
-    throw UnsupportedError("hierarchical space: level " + std::to_string(refined_.size()) + " is deeper than the " +
-                           std::to_string(hierarchy_->max_level()) + " levels the '" + hierarchy_->name() +
-                           "' hierarchy can index (and its knots resolve in double precision)");
   }
   build_from(previous, added);
 }

@@ -18,12 +18,7 @@ std::string to_string(Key k) {
 HierarchicalSpace::HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hierarchy, RefinedCells refined)
     : hierarchy_(std::move(hierarchy)), refined_(std::move(refined)) {
   if (!hierarchy_) throw InputError("hierarchical space: no level hierarchy given");
-  while (!refined_.empty() && refined_.back().empty()) refined_.pop_back();
-  if (static_cast<int>(refined_.size()) > hierarchy_->max_level()) {
-    throw UnsupportedError("hierarchical space: level " + std::to_string(refined_.size()) +
-                           " is deeper than the " + std::to_string(hierarchy_->max_level()) + " levels the '" +
-                           hierarchy_->name() + "' hierarchy can index (and its knots resolve in double precision)");
-  }
+  trim_and_check_depth();
   for (std::size_t l = 0; l < refined_.size(); ++l) {
     for (Key c : refined_[l]) {
       if (!exists(static_cast<int>(l), c)) {
@@ -33,6 +28,15 @@ HierarchicalSpace::HierarchicalSpace(std::shared_ptr<const LevelHierarchy> hiera
     }
   }
   build();
+}
+
+void HierarchicalSpace::trim_and_check_depth() {
+  while (!refined_.empty() && refined_.back().empty()) refined_.pop_back();
+  if (static_cast<int>(refined_.size()) > hierarchy_->max_level()) {
+    throw UnsupportedError("hierarchical space: level " + std::to_string(refined_.size()) +
+                           " is deeper than the " + std::to_string(hierarchy_->max_level()) + " levels the '" +
+                           hierarchy_->name() + "' hierarchy can index (and its knots resolve in double precision)");
+  }
 }
 
 bool HierarchicalSpace::exists(int level, Key cell) const {

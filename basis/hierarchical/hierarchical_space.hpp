@@ -108,6 +108,8 @@ class HierarchicalSpace final : public Space {
     int num_local = 0;                 // level-local functions on the cell
   };
   using CellSets = std::vector<std::unordered_set<Key, KeyHash>>;
+  /// Drops empty deepest levels of refined_; UnsupportedError when it is deeper than the hierarchy can index.
+  void trim_and_check_depth();
   void build();
   void build_from(const HierarchicalSpace& previous, std::span<const LevelCell> added);
   /// The depth-first pass that makes the elements (hierarchical_build.cpp); with `previous`, the subtrees that
