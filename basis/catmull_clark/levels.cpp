@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "basis/catmull_clark/sparse_levels.hpp"
 #include "basis/catmull_clark/topology.hpp"
 #include "core/error.hpp"
 
@@ -207,8 +208,13 @@ int CatmullClarkLevels::continuity(int l, Key cell, int side) const {
 
 std::shared_ptr<const hierarchical::HierarchicalSpace> coarse_hierarchical_space(
     std::shared_ptr<const CatmullClarkSpace> level0) {
-  return std::make_shared<const hierarchical::HierarchicalSpace>(
-      std::make_shared<const CatmullClarkLevels>(std::move(level0)), hierarchical::RefinedCells{});
+  std::shared_ptr<const hierarchical::LevelHierarchy> levels;
+  if (SparseCatmullClarkLevels::supports(*level0)) {
+    levels = std::make_shared<const SparseCatmullClarkLevels>(std::move(level0));
+  } else {
+    levels = std::make_shared<const CatmullClarkLevels>(std::move(level0));
+  }
+  return std::make_shared<const hierarchical::HierarchicalSpace>(std::move(levels), hierarchical::RefinedCells{});
 }
 
 }  // namespace iga::basis::catmull_clark

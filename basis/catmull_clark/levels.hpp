@@ -85,7 +85,8 @@ class CatmullClarkLevels final : public hierarchical::LevelHierarchy {
 };
 
 /// The hierarchical space on a Catmull–Clark space with nothing refined yet (its elements are the space's, in
-/// order; dof d is vertex dof_function(d) of the control net).
+/// order; dof d is vertex dof_function(d) of the control net). Its levels are made cell by cell
+/// (SparseCatmullClarkLevels) where they can be (the clamped rule, closed nets), else whole nets (CatmullClarkLevels).
 std::shared_ptr<const hierarchical::HierarchicalSpace> coarse_hierarchical_space(
     std::shared_ptr<const CatmullClarkSpace> level0);
 

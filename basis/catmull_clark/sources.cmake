@@ -8,6 +8,8 @@ set(IGA_CATMULL_CLARK_SOURCES
   catmull_clark/ghost_net.cpp
   catmull_clark/space.cpp
   catmull_clark/levels.cpp
+  catmull_clark/local_mesh.cpp
+  catmull_clark/sparse_levels.cpp
   catmull_clark/subdivision_matrix.cpp
   catmull_clark/eigen_structure.cpp
   catmull_clark/backend.cpp

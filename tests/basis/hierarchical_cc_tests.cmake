@@ -1,2 +1,3 @@
 iga_add_test(test_hierarchical_cc basis/test_hierarchical_cc.cpp)
 iga_add_slow_forms(test_hierarchical_cc)
+iga_add_test(test_sparse_cc_levels basis/test_sparse_cc_levels.cpp)

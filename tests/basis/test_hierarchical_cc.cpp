@@ -95,9 +95,10 @@ struct Chain {
 };
 
 // `steps` refinements at and next to the EVs through the registry (the first makes the net level 0).
-Chain refine_at_evs(const std::string& name, int steps, int admissibility) {
+Chain refine_at_evs(const std::string& name, int steps, int admissibility,
+                    basis::catmull_clark::BoundaryRule rule = basis::catmull_clark::BoundaryRule::kNatural) {
   Chain c;
-  c.geometries.push_back(basis::catmull_clark::make_catmull_clark_geometry(net(name)));
+  c.geometries.push_back(basis::catmull_clark::make_catmull_clark_geometry(net(name), name, rule));
   for (int s = 0; s < steps; ++s) {
     std::vector<Index> marked;
     const basis::Geometry& g = c.geometries.back();
@@ -116,7 +117,16 @@ Chain refine_at_evs(const std::string& name, int steps, int admissibility) {
   return c;
 }
 
-const char* const kNets[] = {"square_evs.obj", "l_shape.obj"};
+// The natural rule's levels are whole refined nets (CatmullClarkLevels); the clamped rule's are made cell by cell
+// (SparseCatmullClarkLevels, chosen by coarse_hierarchical_space).
+struct NetCase {
+  const char* name;
+  basis::catmull_clark::BoundaryRule rule;
+};
+const NetCase kNets[] = {{"square_evs.obj", basis::catmull_clark::BoundaryRule::kNatural},
+                         {"l_shape.obj", basis::catmull_clark::BoundaryRule::kNatural},
+                         {"square_evs.obj", basis::catmull_clark::BoundaryRule::kClamped},
+                         {"l_shape.obj", basis::catmull_clark::BoundaryRule::kClamped}};
 
 TEST(HierarchicalCatmullClark, LevelsAndChildMaps) {
   auto level0 = std::make_shared<const basis::catmull_clark::CatmullClarkSpace>(net("square_evs.obj"));
@@ -170,8 +180,8 @@ TEST(HierarchicalCatmullClark, LevelsAndChildMaps) {
 }
 
 TEST(HierarchicalCatmullClark, PartitionOfUnityGeometryAndNestedness) {
-  for (const char* name : kNets) {
-    const Chain c = refine_at_evs(name, 4, 2);
+  for (const auto& [name, rule] : kNets) {
+    const Chain c = refine_at_evs(name, 4, 2, rule);
     const basis::Geometry& g0 = c.geometries.front();
     EXPECT_EQ(c.geometries.back().space().name(), "cc");
     EXPECT_EQ(hier(c.geometries.back()).num_levels(), 5) << name;
@@ -237,8 +247,8 @@ TEST(HierarchicalCatmullClark, PartitionOfUnityGeometryAndNestedness) {
 
 // Conformity: on every interior edge (hanging ones included) the geometry map agrees from both sides.
 TEST(HierarchicalCatmullClark, InteriorEdgesMatch) {
-  for (const char* name : kNets) {
-    const Chain c = refine_at_evs(name, 3, 2);
+  for (const auto& [name, rule] : kNets) {
+    const Chain c = refine_at_evs(name, 3, 2, rule);
     const basis::Geometry& g = c.geometries.back();
     double worst = 0;
     Index hanging = 0;
@@ -284,9 +294,9 @@ double collocation_ratio(const HierarchicalSpace& s) {
 }
 
 TEST(HierarchicalCatmullClark, CollocationRank) {
-  for (const char* name : kNets) {
+  for (const auto& [name, rule] : kNets) {
     for (int admissibility : {0, 2}) {
-      const Chain c = refine_at_evs(name, 4, admissibility);
+      const Chain c = refine_at_evs(name, 4, admissibility, rule);
       for (std::size_t k = 1; k < c.geometries.size(); ++k) {
         const double ratio = collocation_ratio(hier(c.geometries[k]));
         std::printf("[hcc] %-15s admissibility %d, %zu refinements: %lld dofs, sigma_min/sigma_max %.2e\n", name,
@@ -305,9 +315,9 @@ namespace {
 void collocation_rank_random_marking(int steps) {
   std::mt19937 rng(7);
   std::bernoulli_distribution pick(0.3);
-  for (const char* name : kNets) {
+  for (const auto& [name, rule] : kNets) {
     for (int trial = 0; trial < 3; ++trial) {
-      basis::Geometry g = basis::catmull_clark::make_catmull_clark_geometry(net(name));
+      basis::Geometry g = basis::catmull_clark::make_catmull_clark_geometry(net(name), name, rule);
       double worst = 1.0;
       for (int step = 0; step < 4; ++step) {
         std::vector<Index> marked;
@@ -334,13 +344,15 @@ TEST(HierarchicalCatmullClark, CollocationRankRandomMarkingQuick) { collocation_
 // Patch test (thesis §4.2.2 (i), here with local refinement): u = 1 + 2x - 3y, Dirichlet everywhere, f = 0; u is
 // in the isoparametric space, so only the quadrature error remains, which the tiles rule removes at the EVs.
 TEST(HierarchicalCatmullClark, PoissonPatchTest) {
-  for (const char* name : kNets) {
-    const Chain c = refine_at_evs(name, 3, 2);
+  for (const auto& [name, rule] : kNets) {
+    const Chain c = refine_at_evs(name, 3, 2, rule);
     const basis::Geometry& g = c.geometries.back();
     const auto rules = quadrature::make_rule_provider("tiles:4:24", 4);
     fem::PoissonProblem p;
     p.exact = std::make_shared<fem::Expression>("1 + 2*x - 3*y", "--exact");
     p.dirichlet = p.exact;
+    // The clamped rule's boundary traces are dependent at boundary EVs: weak conditions (as iga-poisson asks).
+    if (rule == basis::catmull_clark::BoundaryRule::kClamped) p.dirichlet_method = fem::DirichletMethod::kNitsche;
     const fem::PoissonResult r = fem::solve_poisson(g, *rules, p);
     std::printf("[hcc] %-15s patch test: %lld dofs, L2 %.1e, H1 %.1e\n", name, static_cast<long long>(r.dofs),
                 r.errors->l2, r.errors->h1);
