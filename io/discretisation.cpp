@@ -80,6 +80,42 @@ std::vector<Index> parse_intervals(const std::string& list) {
   return intervals;
 }
 
+namespace {
+
+// --grade-evs N: N local refinements of the elements at extraordinary vertices (ElementKind Irregular), each with
+// the neighbours admissibility class 2 adds; the prolongations compose (and are kept as steps for multigrid).
+void grade_toward_extraordinary_vertices(const DiscretisationOptions& o, const Discretisation& d,
+                                         basis::Refinement& refined, basis::BackendFacts& facts, bool keep_steps) {
+  if (o.grade_evs <= 0) return;
+  if (!d.backend->refine_marked) {
+    throw UnsupportedError("--grade-evs: --basis " + d.backend->name + " has no local refinement");
+  }
+  for (int k = 0; k < o.grade_evs; ++k) {
+    std::vector<Index> marked;
+    const basis::Space& s = refined.geometry.space();
+    for (Index e = 0; e < s.num_elements(); ++e) {
+      if (s.kind(e).family == basis::Family::Irregular) marked.push_back(e);
+    }
+    if (marked.empty()) {
+      throw InputError("--grade-evs: the " + (o.mesh.empty() ? std::string("geometry") : o.mesh) +
+                       " has no extraordinary vertex to grade toward");
+    }
+    basis::BackendFacts step_facts;
+    basis::Refinement next = d.backend->refine_marked(refined.geometry, marked, 2, step_facts, true);
+    Eigen::SparseMatrix<double> total =
+        refined.prolongation.rows() == 0 ? next.prolongation : Eigen::SparseMatrix<double>(next.prolongation * refined.prolongation);
+    if (keep_steps) {
+      next.steps = std::move(refined.steps);
+      next.steps.push_back(std::move(next.prolongation));
+    }
+    next.prolongation = std::move(total);
+    refined = std::move(next);
+    facts.counts["graded_levels"] = k + 1;
+  }
+}
+
+}  // namespace
+
 basis::Refinement refined_geometry(const DiscretisationOptions& o, const Discretisation& d, basis::BackendFacts& facts,
                                    const std::function<void(Index elements, Index dofs)>& check, bool keep_steps) {
   // --refine-intervals: each step halves only the listed knot intervals, in both directions (refine-and-smooth).
@@ -102,6 +138,7 @@ basis::Refinement refined_geometry(const DiscretisationOptions& o, const Discret
     }
     refined = std::move(next);
   }
+  grade_toward_extraordinary_vertices(o, d, refined, facts, keep_steps);
   if (check) check(refined.geometry.space().num_elements(), refined.geometry.space().num_dofs());
   return refined;
 }

@@ -27,6 +27,7 @@ struct DiscretisationOptions {
   std::string coarse_split;       ///< --coarse-split (bspline): "U,V", parts per knot interval along u and v
   std::string quadrature;         ///< --quadrature; empty: the backend's default for the degree
   int degree = 3, refine = -1, presubdivide = 0;  ///< refine < 0: the backend's default
+  int grade_evs = 0;  ///< --grade-evs (cc): local refinements of the elements at extraordinary vertices after --refine
   /// The backend options given on the command line (names without dashes): only these reach the backend.
   std::vector<std::string> given;
   bool count(const std::string& option) const;

@@ -1,7 +1,7 @@
 #pragma once
 // The command-line options of a solver program's discretisation (io/discretisation.hpp), the same words in every
 // program: --mesh, --basis, --degree, --refine, --refine-intervals, --coarse-split, --geometry, --cc-boundary, --cc-enrich,
-// --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
+// --grade-evs, --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -52,6 +52,10 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
                  "times a C7 cutoff, valence 5 and more and boundary EVs: restores the rates of the regular parts; uniform "
                  "refinement only)")
       ->check(CLI::IsMember({"none", "quadratic"}))->capture_default_str();
+  app.add_option("--grade-evs", o.grade_evs,
+                 "cc: after --refine, refine the elements at extraordinary vertices N more times (hierarchical, with the "
+                 "neighbours admissibility class 2 needs): a priori grading toward the vertices, one solve")
+      ->check(whole_number(1, 40));
   app.add_option("--presubdivide", o.presubdivide,
                  "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes "
                  "<= 8 admissible)")
@@ -65,7 +69,7 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
 /// not take).
 inline void record_given_options(const CLI::App& app, DiscretisationOptions& o) {
   for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary", "cc-enrich",
-                             "coarse-split"}) {
+                             "coarse-split", "grade-evs"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
 }

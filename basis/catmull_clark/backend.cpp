@@ -67,7 +67,7 @@ Refinement refine_hierarchical(const Geometry& geometry, std::span<const Index> 
   if (dynamic_cast<const EnrichedSpace*>(&geometry.space())) {
     // InputError, not UnsupportedError (which the adaptive loop reads as "no deeper level"): the option pair is
     // refused before anything is refined.
-    throw InputError("--cc-enrich quadratic with local refinement (--adaptive): the enriched space has no "
+    throw InputError("--cc-enrich quadratic with local refinement (--adaptive, --grade-evs): the enriched space has no "
                      "hierarchical form; use uniform refinement (--refine)");
   }
   Eigen::SparseMatrix<double> to_h;
@@ -130,7 +130,7 @@ Backend catmull_clark_backend() {
   b.description = "Catmull–Clark subdivision splines on any control net (exact evaluation at extraordinary vertices)";
   b.default_degree = 3;
   b.default_refine = 1;
-  b.options = {"cc-boundary", "cc-enrich"};
+  b.options = {"cc-boundary", "cc-enrich", "grade-evs"};
   b.from_net = from_net;
   b.refine = refine_net;
   b.refine_marked = refine_hierarchical;

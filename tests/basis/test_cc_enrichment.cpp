@@ -159,7 +159,7 @@ TEST(CatmullClarkEnrichment, BadRequestsAreNamed) {
     basis::refine_marked(g, marked, 0, facts);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "--cc-enrich quadratic with local refinement (--adaptive): the enriched space has no "
+    EXPECT_EQ(std::string(e.what()), "--cc-enrich quadratic with local refinement (--adaptive, --grade-evs): the enriched space has no "
                                      "hierarchical form; use uniform refinement (--refine)");
   }
 }
