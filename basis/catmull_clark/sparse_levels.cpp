@@ -62,6 +62,9 @@ SparseCatmullClarkLevels::SparseCatmullClarkLevels(std::shared_ptr<const Catmull
   }
   max_local_ = static_cast<int>(std::max<Index>(level0_->max_local_dofs(), 2 * 16 + 8));
   cells_.resize(static_cast<std::size_t>(max_level_) + 1);
+  roots_.resize(static_cast<std::size_t>(net.num_faces()));
+  root_ready_ = std::make_unique<std::atomic<const Cell*>[]>(roots_.size());
+  for (std::size_t f = 0; f < roots_.size(); ++f) root_ready_[f].store(nullptr, std::memory_order_relaxed);
 
   vertex_faces_.resize(static_cast<std::size_t>(net.num_vertices()));
   for (Index f = 0; f < net.num_faces(); ++f) {
@@ -95,6 +98,7 @@ std::size_t SparseCatmullClarkLevels::cells_made() const {
   const std::shared_lock<std::shared_mutex> lock(mutex_);
   std::size_t n = 0;
   for (const auto& m : cells_) n += m.size();
+  for (const auto& c : roots_) n += c ? 1 : 0;
   return n;
 }
 
@@ -102,6 +106,17 @@ const SparseCatmullClarkLevels::Cell& SparseCatmullClarkLevels::cell(int level, 
   if (level < 0 || level > max_level_) {
     throw UnsupportedError("Catmull–Clark levels: level " + std::to_string(level) + " is beyond the deepest level " +
                            std::to_string(max_level_) + " (cell keys of 128 bits)");
+  }
+  if (level == 0) {
+    const auto f = static_cast<std::size_t>(key);
+    if (const Cell* c = root_ready_[f].load(std::memory_order_acquire)) return *c;
+    std::unique_ptr<Cell> made = make_cell(0, key);
+    const std::unique_lock<std::shared_mutex> lock(mutex_);
+    if (!roots_[f]) {
+      roots_[f] = std::move(made);
+      root_ready_[f].store(roots_[f].get(), std::memory_order_release);
+    }
+    return *roots_[f];
   }
   auto& map = cells_[static_cast<std::size_t>(level)];
   {

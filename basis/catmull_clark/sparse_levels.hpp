@@ -15,6 +15,7 @@
 // vertex) and methods (Stam's at interior vertices) are CatmullClarkSpace's.
 //
 // Cells are made on first use, under a lock, and never change or move afterwards: evaluation is thread-safe.
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <shared_mutex>
@@ -82,7 +83,10 @@ class SparseCatmullClarkLevels final : public hierarchical::LevelHierarchy {
   std::vector<Index> support_offsets_, support_cells_;  // level 0: vertex -> elements whose dofs contain it
   std::vector<int> part_;                               // level 0: 4 per element, native sides: part or -1
   mutable std::shared_mutex mutex_;
-  mutable std::vector<std::unordered_map<Key, std::unique_ptr<Cell>, hierarchical::KeyHash>> cells_;
+  mutable std::vector<std::unordered_map<Key, std::unique_ptr<Cell>, hierarchical::KeyHash>> cells_;  // levels >= 1
+  // Level 0 (domain and ghost faces of the extended net), looked up without a lock once made.
+  mutable std::vector<std::unique_ptr<Cell>> roots_;
+  std::unique_ptr<std::atomic<const Cell*>[]> root_ready_;
   mutable std::mutex template_mutex_;
   mutable std::vector<std::unique_ptr<Template>> templates_;
 };
