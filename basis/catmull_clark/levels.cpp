@@ -11,25 +11,6 @@ namespace iga::basis::catmull_clark {
 
 using hierarchical::Key;
 
-namespace {
-
-// Native corner j of a face at (0,0), (1,0), (1,1), (0,1).
-Eigen::Vector2d corner(int j) {
-  static const double c[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  const int k = ((j % 4) + 4) % 4;
-  return {c[k][0], c[k][1]};
-}
-
-// The element frame of rotation r in native coordinates: native = corner(r) + frame(r) · reference
-// (reference u runs c_r → c_{r+1}, v runs c_r → c_{r+3}; space.hpp).
-Eigen::Matrix2d frame(int r) {
-  Eigen::Matrix2d m;
-  m.col(0) = corner(r + 1) - corner(r);
-  m.col(1) = corner(r + 3) - corner(r);
-  return m;
-}
-
-}  // namespace
 
 struct CatmullClarkLevels::Level {
   std::shared_ptr<const CatmullClarkSpace> space;
@@ -54,16 +35,14 @@ void CatmullClarkLevels::fill_support(Level& lv) {
   }
 }
 
-CatmullClarkLevels::CatmullClarkLevels(std::shared_ptr<const CatmullClarkSpace> level0) : level0_(std::move(level0)) {
-  if (!level0_) throw InputError("Catmull–Clark levels: no level-0 space given");
+CatmullClarkLevels::CatmullClarkLevels(std::shared_ptr<const CatmullClarkSpace> level0)
+    : CatmullClarkHierarchy(std::move(level0)) {
   const Index faces = level0_->num_elements();
   if (faces > kMaxFaces) {
     throw UnsupportedError("Catmull–Clark levels: the control net has " + std::to_string(faces) +
                            " faces, more than the budget of " + std::to_string(kMaxFaces) + " per level");
   }
   while ((faces << (2 * (max_level_ + 1))) <= kMaxFaces) ++max_level_;
-  // Deeper levels have one-rings of at most 2n + 8 vertices (n <= 16; refinement keeps the valences).
-  max_local_ = static_cast<int>(std::max<Index>(level0_->max_local_dofs(), 2 * 16 + 8));
   owned_.resize(static_cast<std::size_t>(max_level_) + 1);
   ready_ = std::make_unique<std::atomic<const Level*>[]>(static_cast<std::size_t>(max_level_) + 1);
   for (int l = 0; l <= max_level_; ++l) ready_[static_cast<std::size_t>(l)].store(nullptr, std::memory_order_relaxed);
@@ -146,15 +125,6 @@ const Eigen::SparseMatrix<double, Eigen::RowMajor>& CatmullClarkLevels::subdivis
   return level(l).subdivision;
 }
 
-void CatmullClarkLevels::child_map(int l, Key cell, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const {
-  // parent native s = (c_k + t) / 2 (refine_net), child native t = c_rc + F_rc y, parent reference
-  // x = F_rp^T (s - c_rp) (F orthogonal).
-  const int rp = space(l).rotation(cell), rc = space(l + 1).rotation(4 * cell + slot);
-  const Eigen::Matrix2d fp = frame(rp);
-  a = 0.5 * fp.transpose() * frame(rc);
-  b = fp.transpose() * (0.5 * (corner(slot) + corner(rc)) - corner(rp));
-}
-
 int CatmullClarkLevels::local_functions(int l, Key cell, Key* out) const {
   const auto d = space(l).dofs(cell);
   std::copy(d.begin(), d.end(), out);
@@ -200,10 +170,6 @@ Key CatmullClarkLevels::neighbour(int l, Key cell, int side, int& their_side) co
   const Index g = net.half_edge(t).face;
   their_side = (static_cast<int>(t - net.face_half_edge(g)) - s.rotation(g) + 4) % 4;
   return g;
-}
-
-int CatmullClarkLevels::continuity(int l, Key cell, int side) const {
-  return space(l).kind(cell).family == Family::Irregular && (side == 0 || side == 3) ? 1 : 2;
 }
 
 std::shared_ptr<const hierarchical::HierarchicalSpace> coarse_hierarchical_space(

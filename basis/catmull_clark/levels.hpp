@@ -21,15 +21,16 @@
 #include <mutex>
 #include <vector>
 
+#include "basis/catmull_clark/hierarchy_base.hpp"
 #include "basis/catmull_clark/space.hpp"
 #include "basis/hierarchical/hierarchical_space.hpp"
 #include "basis/hierarchical/level_hierarchy.hpp"
 
 namespace iga::basis::catmull_clark {
 
-class CatmullClarkLevels final : public hierarchical::LevelHierarchy {
+class CatmullClarkLevels final : public CatmullClarkHierarchy {
  public:
-  using Key = hierarchical::Key;  // cells and functions of a level fit Index here (kMaxFaces)
+  // Cells and functions of a level fit Index here (kMaxFaces).
   /// The element budget of one level (2^20: about 3 GB for that level alone).
   static constexpr Index kMaxFaces = Index{1} << 20;
 
@@ -38,29 +39,13 @@ class CatmullClarkLevels final : public hierarchical::LevelHierarchy {
   explicit CatmullClarkLevels(std::shared_ptr<const CatmullClarkSpace> level0);
   ~CatmullClarkLevels() override;
 
-  std::string name() const override { return "cc"; }
-  int max_level() const override { return max_level_; }
-  Index num_root_cells() const override { return level0_->num_elements(); }
-  Key child(int, Key cell, int slot) const override { return 4 * cell + slot; }
-  Key parent(int, Key cell, int& slot) const override {
-    slot = static_cast<int>(cell % 4);
-    return cell / 4;
-  }
-  void child_map(int level, Key cell, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
   int local_functions(int level, Key cell, Key* out) const override;
-  int max_local_functions() const override { return max_local_; }
   void support(int level, Key function, std::vector<Key>& cells) const override;
   void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const override;
   void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   ElementKind kind(int level, Key cell) const override { return space(level).kind(cell); }
-  std::optional<int> polynomial_degree(int level, Key cell) const override {
-    return space(level).polynomial_degree(static_cast<Index>(cell));
-  }
   int boundary_part(int level, Key cell, int side) const override;
-  std::vector<std::string> boundary_part_names() const override { return level0_->boundary_part_names(); }
   Key neighbour(int level, Key cell, int side, int& their_side) const override;
-  /// 1 across the two sides of an element that meet its extraordinary vertex, 2 elsewhere.
-  int continuity(int level, Key cell, int side) const override;
 
   /// The space of level l (built on first use; UnsupportedError beyond max_level()).
   const CatmullClarkSpace& space(int level) const;
@@ -76,9 +61,8 @@ class CatmullClarkLevels final : public hierarchical::LevelHierarchy {
   std::unique_ptr<Level> make_level(const Level& coarse) const;
   static void fill_support(Level& level);
 
-  std::shared_ptr<const CatmullClarkSpace> level0_;
-  int max_level_ = 0;
-  int max_local_ = 0;
+  int rotation(int level, Key cell) const override { return space(level).rotation(cell); }
+
   mutable std::mutex mutex_;
   mutable std::vector<std::unique_ptr<Level>> owned_;              // max_level_ + 1 slots, filled in order
   std::unique_ptr<std::atomic<const Level*>[]> ready_;             // published levels

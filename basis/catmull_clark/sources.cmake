@@ -7,6 +7,7 @@ set(IGA_CATMULL_CLARK_SOURCES
   catmull_clark/topology.cpp
   catmull_clark/ghost_net.cpp
   catmull_clark/space.cpp
+  catmull_clark/hierarchy_base.cpp
   catmull_clark/levels.cpp
   catmull_clark/local_mesh.cpp
   catmull_clark/sparse_levels.cpp

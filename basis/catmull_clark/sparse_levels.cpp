@@ -10,19 +10,6 @@ namespace iga::basis::catmull_clark {
 
 namespace {
 
-// Native corner j of a face at (0,0), (1,0), (1,1), (0,1), and the element frame of rotation r (as levels.cpp).
-Eigen::Vector2d corner(int j) {
-  static const double c[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  const int k = ((j % 4) + 4) % 4;
-  return {c[k][0], c[k][1]};
-}
-Eigen::Matrix2d frame(int r) {
-  Eigen::Matrix2d m;
-  m.col(0) = corner(r + 1) - corner(r);
-  m.col(1) = corner(r + 3) - corner(r);
-  return m;
-}
-
 constexpr int kLevelCap = 60;
 
 }  // namespace
@@ -47,8 +34,7 @@ bool SparseCatmullClarkLevels::supports(const CatmullClarkSpace& level0) {
 }
 
 SparseCatmullClarkLevels::SparseCatmullClarkLevels(std::shared_ptr<const CatmullClarkSpace> level0)
-    : level0_(std::move(level0)) {
-  if (!level0_) throw InputError("Catmull–Clark levels: no level-0 space given");
+    : CatmullClarkHierarchy(std::move(level0)) {
   if (!supports(*level0_)) {
     throw InputError("Catmull–Clark levels: cell-by-cell levels need the clamped boundary rule (or a closed net)");
   }
@@ -60,7 +46,6 @@ SparseCatmullClarkLevels::SparseCatmullClarkLevels(std::shared_ptr<const Catmull
     bounds_ = key_bounds(net.num_faces(), net.num_vertices(), max_level_ + 2);
     ++max_level_;
   }
-  max_local_ = static_cast<int>(std::max<Index>(level0_->max_local_dofs(), 2 * 16 + 8));
   cells_.resize(static_cast<std::size_t>(max_level_) + 1);
   roots_.resize(static_cast<std::size_t>(net.num_faces()));
   root_ready_ = std::make_unique<std::atomic<const Cell*>[]>(roots_.size());
@@ -211,13 +196,7 @@ const SparseCatmullClarkLevels::Template& SparseCatmullClarkLevels::template_for
 }
 
 
-void SparseCatmullClarkLevels::child_map(int l, Key c, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const {
-  // parent native s = (c_k + t) / 2, child native t = c_rc + F_rc y, parent reference x = F_rp^T (s - c_rp).
-  const int rp = cell(l, c).rotation, rc = cell(l + 1, 4 * c + slot).rotation;
-  const Eigen::Matrix2d fp = frame(rp);
-  a = 0.5 * fp.transpose() * frame(rc);
-  b = fp.transpose() * (0.5 * (corner(slot) + corner(rc)) - corner(rp));
-}
+int SparseCatmullClarkLevels::rotation(int l, Key c) const { return cell(l, c).rotation; }
 
 int SparseCatmullClarkLevels::local_functions(int l, Key c, Key* out) const {
   const Cell& x = cell(l, c);
@@ -231,15 +210,6 @@ void SparseCatmullClarkLevels::evaluate(int l, Key c, const Eigen::Matrix2Xd& pt
 }
 
 ElementKind SparseCatmullClarkLevels::kind(int l, Key c) const { return cell(l, c).kind; }
-
-std::optional<int> SparseCatmullClarkLevels::polynomial_degree(int l, Key c) const {
-  if (cell(l, c).kind.family == Family::Regular) return 3;
-  return std::nullopt;
-}
-
-int SparseCatmullClarkLevels::continuity(int l, Key c, int side) const {
-  return cell(l, c).kind.family == Family::Irregular && (side == 0 || side == 3) ? 1 : 2;
-}
 
 int SparseCatmullClarkLevels::native_part(int l, Key c, int native_side) const {
   for (; l > 0; --l) {

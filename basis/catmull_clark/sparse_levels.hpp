@@ -22,13 +22,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "basis/catmull_clark/hierarchy_base.hpp"
 #include "basis/catmull_clark/local_mesh.hpp"
 #include "basis/catmull_clark/space.hpp"
 #include "basis/hierarchical/level_hierarchy.hpp"
 
 namespace iga::basis::catmull_clark {
 
-class SparseCatmullClarkLevels final : public hierarchical::LevelHierarchy {
+class SparseCatmullClarkLevels final : public CatmullClarkHierarchy {
  public:
   /// Level 0 is `level0` (clamped rule, or a closed net: InputError otherwise). Its net has quads only and at most
   /// one EV per face (every CatmullClarkSpace's control_mesh() has).
@@ -38,27 +39,13 @@ class SparseCatmullClarkLevels final : public hierarchical::LevelHierarchy {
   /// Whether a space can be level 0 (the clamped rule or a net without boundary).
   static bool supports(const CatmullClarkSpace& level0);
 
-  std::string name() const override { return "cc"; }
-  int max_level() const override { return max_level_; }
-  Index num_root_cells() const override { return level0_->num_elements(); }
-  Key child(int, Key cell, int slot) const override { return 4 * cell + slot; }
-  Key parent(int, Key cell, int& slot) const override {
-    slot = static_cast<int>(cell % 4);
-    return cell / 4;
-  }
-  void child_map(int level, Key cell, int slot, Eigen::Matrix2d& a, Eigen::Vector2d& b) const override;
   int local_functions(int level, Key cell, Key* out) const override;
-  int max_local_functions() const override { return max_local_; }
   void support(int level, Key function, std::vector<Key>& cells) const override;
   void refinement(int level, Key cell, int slot, Eigen::MatrixXd& k) const override;
   void evaluate(int level, Key cell, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const override;
   ElementKind kind(int level, Key cell) const override;
-  std::optional<int> polynomial_degree(int level, Key cell) const override;
   int boundary_part(int level, Key cell, int side) const override;
-  std::vector<std::string> boundary_part_names() const override { return level0_->boundary_part_names(); }
   Key neighbour(int level, Key cell, int side, int& their_side) const override;
-  /// 1 across the two sides of an element that meet its extraordinary vertex, 2 elsewhere.
-  int continuity(int level, Key cell, int side) const override;
 
   /// Cells made so far, over all levels (what the memory grows with).
   std::size_t cells_made() const;
@@ -75,10 +62,9 @@ class SparseCatmullClarkLevels final : public hierarchical::LevelHierarchy {
   bool in_domain(int level, Key face) const;
   int native_part(int level, Key cell, int native_side) const;
 
-  std::shared_ptr<const CatmullClarkSpace> level0_;
+  int rotation(int level, Key cell) const override;
+
   KeyBounds bounds_;
-  int max_level_ = 0;
-  int max_local_ = 0;
   std::vector<std::vector<Index>> vertex_faces_;  // level 0: faces of the extended net at each vertex
   std::vector<Index> support_offsets_, support_cells_;  // level 0: vertex -> elements whose dofs contain it
   std::vector<int> part_;                               // level 0: 4 per element, native sides: part or -1
