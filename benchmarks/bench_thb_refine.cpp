@@ -1,6 +1,8 @@
 // bench-thb-refine: what one local refinement of a THB space costs against the cells it marks and against the
-// cells the mesh has (issue 34, item 2). A degree-p patch on [0, 1]² refined uniformly K times (4^K elements),
-// then the M elements nearest the corner (0, 0) marked and refined with admissibility class 2; timed: the
+// cells the mesh has (issue 34, item 2). A degree-p patch on [0, 1]² (or, with --mesh, hierarchical Catmull–Clark
+// on that net with the clamped rule: levels made cell by cell) refined uniformly K times (4^K elements per root),
+// then the M elements nearest the corner (0, 0) (Catmull–Clark: the first M in key order, a Z-order patch of the
+// first face) marked and refined with admissibility class 2; timed: the
 // refinement as the adaptive loop runs it (closure, incremental build from the previous space, prolongation) and,
 // for comparison, a whole build of the same refined cells and its prolongation. Median of --repeat runs. JSON on
 // stdout (and --json FILE).
@@ -11,10 +13,12 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "basis/catmull_clark/levels.hpp"
 #include "basis/hierarchical/refine.hpp"
 #include "basis/thb/dyadic_levels.hpp"
 #include "core/error.hpp"
 #include "io/report.hpp"
+#include "mesh/obj_reader.hpp"
 
 namespace {
 
@@ -30,13 +34,18 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// The m elements whose centres are nearest the corner (0, 0) (the patch is [0, 1]², uniform).
+// The m elements whose centres are nearest the corner (0, 0) (the patch is [0, 1]², uniform), or (other
+// hierarchies, whose uniform meshes number their cells in Z-order per root) the m with the smallest keys.
 std::vector<Index> near_corner(const HierarchicalSpace& s, Index m) {
-  const auto& h = static_cast<const basis::thb::DyadicBsplineLevels&>(s.hierarchy());
+  const auto* h = dynamic_cast<const basis::thb::DyadicBsplineLevels*>(&s.hierarchy());
   std::vector<std::pair<double, Index>> d;
   d.reserve(static_cast<std::size_t>(s.num_elements()));
   for (Index e = 0; e < s.num_elements(); ++e) {
-    const Eigen::Vector4d box = h.cell_box(s.level(e), s.cell(e));  // u0, u1, v0, v1
+    if (h == nullptr) {
+      d.emplace_back(static_cast<double>(s.cell(e)), e);
+      continue;
+    }
+    const Eigen::Vector4d box = h->cell_box(s.level(e), s.cell(e));  // u0, u1, v0, v1
     d.emplace_back(std::hypot(box(0) + box(1), box(2) + box(3)), e);
   }
   std::nth_element(d.begin(), d.begin() + (m - 1), d.end());
@@ -81,8 +90,10 @@ int main(int argc, char** argv) {
   CLI::App app{"bench-thb-refine: the cost of a local THB refinement against marked and total cells"};
   int degree = 2, min_refine = 6, max_refine = 9, repeat = 3;
   std::vector<Index> marks{1, 10, 100, 1000, 10000};
-  std::string json;
+  std::string json, mesh;
   app.add_option("--degree", degree)->capture_default_str()->check(CLI::Range(1, 6));
+  app.add_option("--mesh", mesh, "a Catmull–Clark control net (OBJ): hierarchical Catmull–Clark with the clamped rule "
+                 "instead of THB (--degree does not apply)")->check(CLI::ExistingFile);
   app.add_option("--min-refine", min_refine, "uniform refinements of the smallest base mesh (4^K elements)")
       ->capture_default_str()->check(CLI::Range(1, 12));
   app.add_option("--max-refine", max_refine, "... of the largest")->capture_default_str()->check(CLI::Range(1, 12));
@@ -94,12 +105,24 @@ int main(int argc, char** argv) {
   try {
     using namespace iga;
     if (min_refine > max_refine) throw InputError("--min-refine " + std::to_string(min_refine) + " is above --max-refine " + std::to_string(max_refine));
-    std::vector<double> knots(static_cast<std::size_t>(degree + 1), 0.0);
-    knots.insert(knots.end(), static_cast<std::size_t>(degree + 1), 1.0);
-    const basis::bspline::KnotVector k(degree, knots);
-    auto space = basis::thb::coarse_thb_space(k, k);
+    std::shared_ptr<const HierarchicalSpace> space;
+    nlohmann::json report = {{"program", "bench-thb-refine"}, {"admissibility", 2}, {"repeat", repeat}};
+    if (mesh.empty()) {
+      std::vector<double> knots(static_cast<std::size_t>(degree + 1), 0.0);
+      knots.insert(knots.end(), static_cast<std::size_t>(degree + 1), 1.0);
+      const basis::bspline::KnotVector k(degree, knots);
+      space = basis::thb::coarse_thb_space(k, k);
+      report["basis"] = "thb";
+      report["degree"] = degree;
+    } else {
+      if (app.count("--degree") > 0) throw InputError("--degree does not apply to --mesh (Catmull–Clark is bicubic)");
+      space = basis::catmull_clark::coarse_hierarchical_space(std::make_shared<const basis::catmull_clark::CatmullClarkSpace>(
+          mesh::read_obj(mesh), mesh, basis::catmull_clark::IrregularMethod::kStam,
+          basis::catmull_clark::BoundaryRule::kClamped));
+      report["basis"] = "cc";
+      report["mesh"] = mesh;
+    }
     for (int r = 0; r < min_refine; ++r) space = basis::hierarchical::refine_all(*space).space;
-    nlohmann::json report = {{"program", "bench-thb-refine"}, {"degree", degree}, {"admissibility", 2}, {"repeat", repeat}};
     for (int r = min_refine; r <= max_refine; ++r) {
       for (Index m : marks) {
         if (4 * m > space->num_elements()) continue;

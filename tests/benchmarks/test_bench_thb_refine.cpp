@@ -46,3 +46,29 @@ TEST(BenchThbRefine, SmallRunReportsEveryMeasurement) {
     }
   }
 }
+
+// --mesh: hierarchical Catmull–Clark (clamped, cell-by-cell levels) on the 48-face L-shape: 48 · 4^K elements, the
+// marked cells refined without closure, incremental builds equal to whole ones (checked by the program), and
+// --degree refused with it.
+TEST(BenchThbRefine, CatmullClarkNet) {
+  const fs::path dir = fs::temp_directory_path() / ("bench_thb_refine_cc_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string mesh = std::string(IGA_SOURCE_DIR) + "/data/meshes/l_shape.obj";
+  const auto run = iga::test::run_program(dir, BENCH_THB_REFINE_EXE,
+                                          "--mesh " + mesh + " --min-refine 1 --max-refine 2 --repeat 1 --marked 1 10 --json out.json");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "out.json"));
+  EXPECT_EQ(j["basis"], "cc");
+  ASSERT_EQ(j["runs"].size(), 4u);
+  const int elements[] = {192, 192, 768, 768}, marked[] = {1, 10, 1, 10};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const nlohmann::json& r = j["runs"][i];
+    EXPECT_EQ(r["elements"], elements[i]);
+    EXPECT_EQ(r["refined_cells"], marked[i]);
+    EXPECT_TRUE(r["incremental"].get<bool>());
+  }
+  const auto bad = iga::test::run_program(dir, BENCH_THB_REFINE_EXE, "--mesh " + mesh + " --degree 3 --min-refine 1 --max-refine 1");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("--degree does not apply to --mesh"), std::string::npos) << bad.err;
+  fs::remove_all(dir);
+}
