@@ -1,6 +1,7 @@
 #include "basis/catmull_clark/sparse_levels.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "basis/catmull_clark/ghost_net.hpp"
@@ -39,10 +40,21 @@ SparseCatmullClarkLevels::SparseCatmullClarkLevels(std::shared_ptr<const Catmull
     throw InputError("Catmull–Clark levels: cell-by-cell levels need the clamped boundary rule (or a closed net)");
   }
   const mesh::PolyMesh& net = level0_->control_mesh();
-  // The deepest level whose keys (and the next level's, which support() decodes) stay below 2^120.
+  // The deepest level whose keys (and the next level's, which support() decodes) stay below 2^120, and whose
+  // edges (about 2^-l of the net's shortest) stay 64 rounding units of the net's coordinates long.
+  double shortest = HUGE_VAL, largest = 0;
+  for (Index f = 0; f < net.num_faces(); ++f) {
+    const auto fv = net.face(f);
+    for (std::size_t j = 0; j < fv.size(); ++j) {
+      shortest = std::min(shortest, (net.point(fv[j]) - net.point(fv[(j + 1) % fv.size()])).norm());
+      largest = std::max(largest, net.point(fv[j]).cwiseAbs().maxCoeff());
+    }
+  }
+  const double unit = std::nextafter(largest, HUGE_VAL) - largest;
   const Key limit = Key{1} << 120;
   bounds_ = key_bounds(net.num_faces(), net.num_vertices(), 0);
-  while (max_level_ < kLevelCap && bounds_.faces.back() < limit / 8 && bounds_.vertex_bound.back() < limit / 8) {
+  while (max_level_ < kLevelCap && bounds_.faces.back() < limit / 8 && bounds_.vertex_bound.back() < limit / 8 &&
+         std::ldexp(shortest, -(max_level_ + 1)) >= 64 * unit) {
     bounds_ = key_bounds(net.num_faces(), net.num_vertices(), max_level_ + 2);
     ++max_level_;
   }

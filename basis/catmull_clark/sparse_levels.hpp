@@ -2,8 +2,9 @@
 // The levels of hierarchical Catmull–Clark splines held cell by cell (issue 34): a cell of level l exists once
 // something asks for it, as its neighbourhood (local_mesh.hpp: the faces of its level that share a vertex with
 // it, with keys) derived from its parent's by one local Catmull–Clark step. Nothing is built per level, so the
-// depth is limited by the keys (128 bits: at least 50 levels on a net of 10^4 faces), and memory grows with the
-// cells that are used, not with 4^l.
+// depth is limited by the keys (128 bits: at least 50 levels on a net of 10^4 faces) and by double precision (the
+// deepest level's edges, 2^-l of the net's shortest, at least 64 rounding units of its coordinates: 42 levels on
+// l_shape.obj), and memory grows with the cells that are used, not with 4^l.
 //
 // The same spaces as CatmullClarkLevels (levels.hpp: whole refined nets), for the clamped rule or a closed net,
 // where every cell of the domain has its whole one-ring in the extended net (ghost_net.hpp) and the levels'

@@ -10,8 +10,8 @@
 #include "support/paths.hpp"
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <random>
@@ -22,6 +22,7 @@
 #include "basis/catmull_clark/sparse_levels.hpp"
 #include "basis/hierarchical/hierarchical_space.hpp"
 #include "basis/registry.hpp"
+#include "core/error.hpp"
 #include "mesh/obj_reader.hpp"
 
 namespace {
@@ -107,7 +108,7 @@ void compare(const std::string& name) {
   const auto level0 = clamped(name);
   const CatmullClarkLevels dense(level0);
   const SparseCatmullClarkLevels sparse(level0);
-  EXPECT_GE(sparse.max_level(), 50);
+  EXPECT_GE(sparse.max_level(), 40);
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> u(-1, 1);
   Eigen::VectorXd c0(level0->num_dofs());
@@ -249,6 +250,20 @@ TEST(SparseCatmullClarkLevels, ThirtyTwoLevelsTowardAVertexAndACorner) {
     return (corners_of(g, e).colwise() - corner).colwise().norm().minCoeff();
   });
   expect_deep(to_corner, corner, "toward a convex corner");
+
+  // On toward the EV until the deepest level: refused by name (the adaptive loop stops there with this reason).
+  const auto& h = dynamic_cast<const basis::hierarchical::HierarchicalSpace&>(to_ev.geometry.space());
+  const int deepest = h.hierarchy().max_level();
+  EXPECT_GE(deepest, 40);  // edges of 0.25 / 2^l (or 0.125 / 2^l) against 64 ulp(2.25) = 2^-45
+  try {
+    refine_toward(to_ev.geometry, deepest, [](const basis::Geometry& g, Index e) {
+      return g.space().kind(e).family == basis::Family::Irregular ? 0.0 : 1.0;
+    });
+    ADD_FAILURE() << "no error past the deepest level";
+  } catch (const UnsupportedError& e) {
+    const std::string expect = "is deeper than the " + std::to_string(deepest) + " levels the 'cc' hierarchy can index";
+    EXPECT_NE(std::string(e.what()).find(expect), std::string::npos) << e.what();
+  }
 }
 
 TEST(SparseCatmullClarkLevels, RefusesTheNaturalRuleOnAnOpenNet) {
