@@ -104,8 +104,8 @@ void grade_toward_extraordinary_vertices(const DiscretisationOptions& o, const D
       for (Index dof : s.dofs(e)) near[static_cast<std::size_t>(dof)] = 1;
     }
     for (Index e = 0; e < s.num_elements() && any; ++e) {
-      const auto d = s.dofs(e);
-      if (std::any_of(d.begin(), d.end(), [&](Index x) { return near[static_cast<std::size_t>(x)] != 0; })) {
+      const auto dofs = s.dofs(e);
+      if (std::any_of(dofs.begin(), dofs.end(), [&](Index x) { return near[static_cast<std::size_t>(x)] != 0; })) {
         marked.push_back(e);
       }
     }
