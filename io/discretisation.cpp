@@ -82,9 +82,23 @@ std::vector<Index> parse_intervals(const std::string& list) {
 
 namespace {
 
+// One more refinement step after `refined`; with keep_steps (multigrid) its prolongation joins the steps and the
+// composed prolongation.
+void append_step(basis::Refinement& refined, basis::Refinement next, bool keep_steps) {
+  if (keep_steps) {
+    Eigen::SparseMatrix<double> total = refined.prolongation.rows() == 0
+                                            ? next.prolongation
+                                            : Eigen::SparseMatrix<double>(next.prolongation * refined.prolongation);
+    next.steps = std::move(refined.steps);
+    next.steps.push_back(std::move(next.prolongation));
+    next.prolongation = std::move(total);
+  }
+  refined = std::move(next);
+}
+
 // --grade-evs N: N local refinements around the extraordinary vertices: of the elements that share a function with
-// an element at one (ElementKind Irregular), each with the neighbours admissibility class 2 adds; the prolongations
-// compose (and are kept as steps for multigrid). Refining only the elements at the vertices leaves the next ring
+// an element at one (ElementKind Irregular), each with the neighbours admissibility class 2 adds (steps as
+// append_step keeps them). Refining only the elements at the vertices leaves the next ring
 // at the coarse level, where the space lacks the quadratics near valences >= 5 (square_evs.obj, --refine 4: 1.2e-8
 // against 5.6e-9 with the wider rings).
 void grade_toward_extraordinary_vertices(const DiscretisationOptions& o, const Discretisation& d,
@@ -114,15 +128,7 @@ void grade_toward_extraordinary_vertices(const DiscretisationOptions& o, const D
                        " has no extraordinary vertex to grade toward");
     }
     basis::BackendFacts step_facts;
-    basis::Refinement next = d.backend->refine_marked(refined.geometry, marked, 2, step_facts, true);
-    Eigen::SparseMatrix<double> total =
-        refined.prolongation.rows() == 0 ? next.prolongation : Eigen::SparseMatrix<double>(next.prolongation * refined.prolongation);
-    if (keep_steps) {
-      next.steps = std::move(refined.steps);
-      next.steps.push_back(std::move(next.prolongation));
-    }
-    next.prolongation = std::move(total);
-    refined = std::move(next);
+    append_step(refined, d.backend->refine_marked(refined.geometry, marked, 2, step_facts, keep_steps), keep_steps);
     facts.counts["graded_levels"] = k + 1;
   }
 }
@@ -142,14 +148,7 @@ basis::Refinement refined_geometry(const DiscretisationOptions& o, const Discret
   basis::Refinement refined = basis::make_refined_geometry(*d.backend, d.net ? &*d.net : nullptr, d.options,
                                                            intervals.empty() ? steps : 0, facts, keep_steps);
   for (int k = 0; !intervals.empty() && k < steps; ++k) {
-    basis::Refinement next = refine::refine_smooth_tensor(refined.geometry, intervals, intervals);
-    if (keep_steps) {
-      Eigen::SparseMatrix<double> total = next.prolongation * refined.prolongation;
-      next.steps = std::move(refined.steps);
-      next.steps.push_back(std::move(next.prolongation));
-      next.prolongation = std::move(total);
-    }
-    refined = std::move(next);
+    append_step(refined, refine::refine_smooth_tensor(refined.geometry, intervals, intervals), keep_steps);
   }
   grade_toward_extraordinary_vertices(o, d, refined, facts, keep_steps);
   if (check) check(refined.geometry.space().num_elements(), refined.geometry.space().num_dofs());
