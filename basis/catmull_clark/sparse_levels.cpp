@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "basis/catmull_clark/ghost_net.hpp"
@@ -36,6 +37,8 @@ bool SparseCatmullClarkLevels::supports(const CatmullClarkSpace& level0) {
 
 SparseCatmullClarkLevels::SparseCatmullClarkLevels(std::shared_ptr<const CatmullClarkSpace> level0)
     : CatmullClarkHierarchy(std::move(level0)) {
+  static std::atomic<std::uint64_t> instances{0};
+  id_ = ++instances;
   if (!supports(*level0_)) {
     throw InputError("Catmull–Clark levels: cell-by-cell levels need the clamped boundary rule (or a closed net)");
   }
@@ -307,10 +310,29 @@ void SparseCatmullClarkLevels::support(int l, Key function, std::vector<Key>& ce
   }
 }
 
+// The hierarchical builds ask refinement() for the four slots of a cell in turn, with deeper levels in between: the
+// last refined neighbourhood per level and thread is kept, so the local step runs once per cell, not four times.
+const RefinedMesh& SparseCatmullClarkLevels::refined(int l, Key c) const {
+  struct Entry {
+    std::uint64_t owner = 0;
+    Key cell = -1;
+    RefinedMesh mesh;
+  };
+  thread_local std::vector<Entry> cache;
+  if (cache.size() <= static_cast<std::size_t>(l)) cache.resize(static_cast<std::size_t>(l) + 1);
+  Entry& e = cache[static_cast<std::size_t>(l)];
+  if (e.owner != id_ || e.cell != c) {
+    e.mesh = refine_local(cell(l, c).mesh, bounds_, l);
+    e.owner = id_;
+    e.cell = c;
+  }
+  return e.mesh;
+}
+
 void SparseCatmullClarkLevels::refinement(int l, Key c, int slot, Eigen::MatrixXd& k) const {
   const Cell& p = cell(l, c);
   const Cell& ch = cell(l + 1, 4 * c + slot);
-  const RefinedMesh r = refine_local(p.mesh, bounds_, l);
+  const RefinedMesh& r = refined(l, c);
   k.setZero(static_cast<Eigen::Index>(p.functions.size()), static_cast<Eigen::Index>(ch.functions.size()));
   for (std::size_t j = 0; j < ch.functions.size(); ++j) {
     const auto v = std::find(r.mesh.vertex.begin(), r.mesh.vertex.end(), ch.functions[j]);

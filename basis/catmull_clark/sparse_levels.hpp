@@ -17,6 +17,7 @@
 //
 // Cells are made on first use, under a lock, and never change or move afterwards: evaluation is thread-safe.
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <shared_mutex>
@@ -64,7 +65,9 @@ class SparseCatmullClarkLevels final : public CatmullClarkHierarchy {
   int native_part(int level, Key cell, int native_side) const;
 
   int rotation(int level, Key cell) const override;
+  const RefinedMesh& refined(int level, Key cell) const;
 
+  std::uint64_t id_ = 0;  // tells this object's entries in refined()'s per-thread cache from another's
   KeyBounds bounds_;
   std::vector<std::vector<Index>> vertex_faces_;  // level 0: faces of the extended net at each vertex
   std::vector<Index> support_offsets_, support_cells_;  // level 0: vertex -> elements whose dofs contain it
