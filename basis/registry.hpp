@@ -28,6 +28,7 @@ struct BackendOptions {
   std::string net_name = "mesh";  ///< the net's file name, for messages
   std::string cc_boundary;        ///< "cc-boundary": cc, natural (default when empty) or clamped
   std::string cc_enrich;          ///< "cc-enrich": cc, none (default when empty) or quadratic (at the EVs)
+  std::vector<Index> cc_corners;  ///< "cc-corners": cc (clamped), 0-based net vertices the limit domain keeps as corners
   /// "coarse-split" (bspline): every knot interval of the patch split into split_u × split_v equal parts before any
   /// refinement (knot insertion: the same map, a coarse mesh of chosen aspect ratio)
   int split_u = 1, split_v = 1;

@@ -35,6 +35,21 @@ void parse_coarse_split(const std::string& text, basis::BackendOptions& options)
   options.split_u = u;
   options.split_v = v;
 }
+
+// "41,7": 1-based vertex numbers as the OBJ's f lines write them, returned 0-based.
+std::vector<Index> parse_vertex_numbers(const std::string& option, const std::string& list) {
+  std::vector<Index> vertices;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const bool digits = !item.empty() && item.size() <= 12 && item.find_first_not_of("0123456789") == std::string::npos;
+    const long long v = digits ? std::stoll(item) : 0;
+    if (v < 1) throw InputError(option + ": '" + item + "' is not a vertex number (1, 2, ... as the OBJ's f lines number them)");
+    vertices.push_back(static_cast<Index>(v - 1));
+  }
+  if (vertices.empty() || list.back() == ',') throw InputError(option + ": '" + list + "' is not a comma-separated list of vertex numbers");
+  return vertices;
+}
 }  // namespace
 
 Discretisation make_discretisation(const DiscretisationOptions& o) {
@@ -47,6 +62,7 @@ Discretisation make_discretisation(const DiscretisationOptions& o) {
   if (o.count("cc-boundary")) d.options.cc_boundary = o.cc_boundary;
   if (o.count("cc-enrich")) d.options.cc_enrich = o.cc_enrich;
   if (o.count("coarse-split")) parse_coarse_split(o.coarse_split, d.options);
+  if (o.count("cc-corners")) d.options.cc_corners = parse_vertex_numbers("--cc-corners", o.cc_corners);
   d.options.net_name = o.mesh;
   d.degree = basis::degree(*d.backend, d.options);
   if (!o.mesh.empty()) d.net = mesh::read_obj(o.mesh);

@@ -23,6 +23,7 @@ struct DiscretisationOptions {
   std::string basis = "bspline";  ///< --basis: a registered backend
   std::string geometry;           ///< --geometry (bspline): a built-in geometry or a patch file
   std::string cc_boundary = "natural", cc_enrich = "none";
+  std::string cc_corners;         ///< --cc-corners (cc): net vertices, 1-based as the OBJ's f lines, comma-separated
   std::string refine_intervals;   ///< --refine-intervals (bspline): 0-based knot intervals, comma-separated
   std::string coarse_split;       ///< --coarse-split (bspline): "U,V", parts per knot interval along u and v
   std::string quadrature;         ///< --quadrature; empty: the backend's default for the degree

@@ -1,7 +1,7 @@
 #pragma once
 // The command-line options of a solver program's discretisation (io/discretisation.hpp), the same words in every
 // program: --mesh, --basis, --degree, --refine, --refine-intervals, --coarse-split, --geometry, --cc-boundary, --cc-enrich,
-// --grade-evs, --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
+// --cc-corners, --grade-evs, --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -52,6 +52,11 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
                  "times a C7 cutoff, valence 5 and more and boundary EVs: restores the rates of the regular parts; uniform "
                  "refinement only)")
       ->check(CLI::IsMember({"none", "quadratic"}))->capture_default_str();
+  app.add_option("--cc-corners", o.cc_corners,
+                 "cc with --cc-boundary clamped: net vertices (numbered from 1 as in the OBJ's f lines, comma-separated) the "
+                 "limit domain keeps as true corners: its boundary passes through each with the directions of the vertex's "
+                 "two boundary edges (e.g. an L-shape's reflex corner); vertices with two or more faces")
+      ->check(non_blank());
   app.add_option("--grade-evs", o.grade_evs,
                  "cc: after --refine, refine the elements at extraordinary vertices N more times (hierarchical, with the "
                  "neighbours admissibility class 2 needs): a priori grading toward the vertices, one solve")
@@ -69,7 +74,7 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
 /// not take).
 inline void record_given_options(const CLI::App& app, DiscretisationOptions& o) {
   for (const char* option : {"degree", "presubdivide", "refine-intervals", "geometry", "cc-boundary", "cc-enrich",
-                             "coarse-split", "grade-evs"}) {
+                             "cc-corners", "coarse-split", "grade-evs"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
 }

@@ -2,6 +2,7 @@
 #include <Eigen/Dense>
 #include <memory>
 
+#include "basis/catmull_clark/corners.hpp"
 #include "basis/catmull_clark/ev_enrichment.hpp"
 #include "basis/catmull_clark/levels.hpp"
 #include "basis/catmull_clark/space.hpp"
@@ -27,7 +28,8 @@ const CatmullClarkSpace& cc_of(const Geometry& g) {
 
 Geometry from_net(const mesh::PolyMesh& net, const BackendOptions& o, BackendFacts& facts) {
   const auto rule = o.cc_boundary.empty() ? catmull_clark::BoundaryRule::kNatural : catmull_clark::boundary_rule(o.cc_boundary);
-  Geometry g = catmull_clark::make_catmull_clark_geometry(net, o.net_name, rule);
+  Geometry g = catmull_clark::with_corners(catmull_clark::make_catmull_clark_geometry(net, o.net_name, rule),
+                                           o.cc_corners, o.net_name);
   const int steps = cc_of(g).refinement_steps();
   facts.counts["cc_global_steps"] = steps;
   if (steps > 0) {
@@ -130,7 +132,7 @@ Backend catmull_clark_backend() {
   b.description = "Catmull–Clark subdivision splines on any control net (exact evaluation at extraordinary vertices)";
   b.default_degree = 3;
   b.default_refine = 1;
-  b.options = {"cc-boundary", "cc-enrich", "grade-evs"};
+  b.options = {"cc-boundary", "cc-enrich", "cc-corners", "grade-evs"};
   b.from_net = from_net;
   b.refine = refine_net;
   b.refine_marked = refine_hierarchical;

@@ -6,6 +6,7 @@ set(IGA_CATMULL_CLARK_SOURCES
   catmull_clark/irregular_patch.cpp
   catmull_clark/topology.cpp
   catmull_clark/ghost_net.cpp
+  catmull_clark/corners.cpp
   catmull_clark/space.cpp
   catmull_clark/hierarchy_base.cpp
   catmull_clark/levels.cpp

@@ -38,35 +38,7 @@ PolyMesh net(const std::string& name) { return iga::mesh::read_obj(std::string(I
 
 // An open fan of k sectors of 2 × 2 quads around vertex 0 (a boundary vertex with k faces) in the upper
 // half-plane.
-PolyMesh boundary_fan(int k) {
-  std::vector<Eigen::Vector3d> p{Eigen::Vector3d::Zero()};
-  auto dir = [&](int t) { return Eigen::Vector3d(std::cos(M_PI * t / k), std::sin(M_PI * t / k), 0.0); };
-  std::vector<std::array<Index, 3>> spoke(static_cast<std::size_t>(k + 1));
-  for (int t = 0; t <= k; ++t) {
-    spoke[static_cast<std::size_t>(t)][0] = 0;
-    for (int i = 1; i <= 2; ++i) {
-      spoke[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)] = static_cast<Index>(p.size());
-      p.push_back(dir(t) * i / 2.0);
-    }
-  }
-  std::vector<std::vector<Index>> faces;
-  for (int s = 0; s < k; ++s) {
-    Index id[3][3];
-    for (int i = 0; i <= 2; ++i) {
-      for (int j = 0; j <= 2; ++j) {
-        if (j == 0) id[i][j] = spoke[static_cast<std::size_t>(s)][static_cast<std::size_t>(i)];
-        else if (i == 0) id[i][j] = spoke[static_cast<std::size_t>(s + 1)][static_cast<std::size_t>(j)];
-        else {
-          id[i][j] = static_cast<Index>(p.size());
-          p.push_back((dir(s) * i + dir(s + 1) * j) / 2.0);
-        }
-      }
-    }
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j) faces.push_back({id[i][j], id[i + 1][j], id[i + 1][j + 1], id[i][j + 1]});
-  }
-  return PolyMesh::build(p, faces);
-}
+PolyMesh boundary_fan(int k) { return iga::test::open_fan(k, M_PI); }
 
 // Moduli of the eigenvalues of the subdivision matrix of element e's configuration, descending.
 std::vector<double> spectrum(const CatmullClarkSpace& s, Index e) {

@@ -145,7 +145,7 @@ TEST(Registry, OptionsABackendDoesNotTakeAreErrors) {
     check_options(backend("cc"), {"degree"});
     FAIL() << "--degree accepted for cc";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "--degree is not an option of --basis cc (its options: --cc-boundary, --cc-enrich, --grade-evs)");
+    EXPECT_EQ(std::string(e.what()), "--degree is not an option of --basis cc (its options: --cc-boundary, --cc-enrich, --cc-corners, --grade-evs)");
   }
   try {
     check_options(backend("polyhedral"), {"presubdivide", "degree"});

@@ -1,6 +1,7 @@
 // iga-poisson end to end: the .vtu read back with VTK's XML reader, the JSON report, one clear error line.
 #include "support/paths.hpp"
 #include "support/program_run.hpp"
+#include "support/rates.hpp"
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -170,6 +171,46 @@ TEST_F(IgaPoisson, GradingTowardExtraordinaryVertices) {
   EXPECT_EQ(g["graded_levels"], 4);
   EXPECT_LT(g["dofs"].get<double>(), u["dofs"].get<double>());
   EXPECT_LT(g["l2_error"].get<double>(), 0.15 * u["l2_error"].get<double>());
+}
+
+// Adaptive Catmull–Clark on the L-shape whose reflex corner (vertex 41, (1, 1)) is kept as a corner of the limit
+// domain (--cc-corners: 270°, tangent to the edges), so u = r^(2/3) sin(2φ/3) is singular there: uniform refinement
+// is held to the singular rate (|e|_H1 ~ dofs^(-1/3): measured 0.29 at 1k..13k dofs), the adaptive loop reaches the
+// optimal one (p/2 = 1.5 in the dofs; the issue asks >= 0.9 of it over the last 10 steps). Measured: slope 1.97 over
+// steps 21..30 (8,134 dofs), 1.58 over steps 36..45 (231k dofs); efficiency index 2.8 .. 4.9 over 30 steps.
+TEST_F(IgaPoisson, AdaptiveCatmullClarkReachesTheOptimalRateAtACornerVertex) {
+  const std::string base = "--quiet --basis cc --mesh '" + std::string(IGA_SOURCE_DIR) +
+                           "/data/meshes/l_shape.obj' --cc-boundary clamped --cc-corners 41 --problem corner "
+                           "--dirichlet-method nitsche --threads 1 --vtu none ";
+  const Outcome r = run(base + "--refine 1 --adaptive 30 --json adaptive.json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json history = report("adaptive.json")["adaptive"]["history"];
+  ASSERT_EQ(history.size(), 31u);
+  std::vector<double> dofs, err;
+  double lo = 1e300, hi = 0;
+  for (std::size_t i = 0; i < history.size(); ++i) {
+    const double eff = history[i]["efficiency_index"].get<double>();
+    lo = std::min(lo, eff);
+    hi = std::max(hi, eff);
+    if (i + 10 >= history.size()) {
+      dofs.push_back(history[i]["dofs"].get<double>());
+      err.push_back(history[i]["energy_error"].get<double>());
+    }
+  }
+  const double slope = iga::test::fitted_rate_in_dofs(dofs, err);
+  std::cout << "adaptive cc at the corner: slope " << slope << " over the last 10 steps, efficiency " << lo << " .. " << hi << "\n";
+  EXPECT_GE(slope, 1.35);
+  EXPECT_GT(lo, 1.0);
+  EXPECT_LT(hi / lo, 3.0);
+  // Uniform refinement: the singular rate.
+  std::vector<double> udofs, uerr;
+  for (int k = 2; k <= 4; ++k) {
+    ASSERT_EQ(run(base + "--refine " + std::to_string(k) + " --json uniform.json").code, 0);
+    const nlohmann::json u = report("uniform.json");
+    udofs.push_back(u["dofs"].get<double>());
+    uerr.push_back(u["h1_error"].get<double>());
+  }
+  EXPECT_NEAR(iga::test::fitted_rate_in_dofs(udofs, uerr), 1.0 / 3.0, 0.08);
 }
 
 // Half-box splines on the dual of a triangulation (a net the program reads; pentagons and heptagons inside):

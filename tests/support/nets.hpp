@@ -24,14 +24,17 @@ inline mesh::PolyMesh square_grid(int m) {
   return mesh::PolyMesh::build(p, f);
 }
 
-/// A closed fan of n sectors of k × k quads around vertex 0, an interior EV of valence n, its spokes of length
-/// `radius`; the boundary has corners (the sectors' outer corners) and smooth boundary vertices only. With k = 1
-/// the EV's faces reach the boundary.
-inline mesh::PolyMesh closed_fan(int n, int k, double radius = 1.0) {
+/// A fan of `sectors` sectors of k × k quads around vertex 0, its spokes of length `radius` at the angles
+/// angle · t / sectors: closed (angle 2π, the last spoke is the first; vertex 0 an interior EV of valence `sectors`)
+/// or open (vertex 0 a boundary vertex with `sectors` faces and interior angle `angle`). Vertices: 0, the spokes'
+/// points outward spoke by spoke, then each sector's inner points.
+inline mesh::PolyMesh fan(int sectors, double angle, bool closed, int k, double radius) {
+  const int n = sectors;
   std::vector<Eigen::Vector3d> p{Eigen::Vector3d::Zero()};
-  auto dir = [&](int t) { return Eigen::Vector3d(radius * std::cos(2 * M_PI * t / n), radius * std::sin(2 * M_PI * t / n), 0.0); };
-  std::vector<std::vector<Index>> spoke(static_cast<std::size_t>(n), std::vector<Index>(static_cast<std::size_t>(k + 1), 0));
-  for (int t = 0; t < n; ++t) {
+  auto dir = [&](int t) { return Eigen::Vector3d(radius * std::cos(angle * t / n), radius * std::sin(angle * t / n), 0.0); };
+  const int spokes = closed ? n : n + 1;
+  std::vector<std::vector<Index>> spoke(static_cast<std::size_t>(spokes), std::vector<Index>(static_cast<std::size_t>(k + 1), 0));
+  for (int t = 0; t < spokes; ++t) {
     for (int i = 1; i <= k; ++i) {
       spoke[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)] = static_cast<Index>(p.size());
       p.push_back(dir(t) * i / k);
@@ -44,7 +47,7 @@ inline mesh::PolyMesh closed_fan(int n, int k, double radius = 1.0) {
       for (int j = 0; j <= k; ++j) {
         Index v;
         if (j == 0) v = spoke[static_cast<std::size_t>(s)][static_cast<std::size_t>(i)];
-        else if (i == 0) v = spoke[static_cast<std::size_t>((s + 1) % n)][static_cast<std::size_t>(j)];
+        else if (i == 0) v = spoke[static_cast<std::size_t>((s + 1) % spokes)][static_cast<std::size_t>(j)];
         else {
           v = static_cast<Index>(p.size());
           p.push_back((dir(s) * i + dir(s + 1) * j) / k);
@@ -59,6 +62,15 @@ inline mesh::PolyMesh closed_fan(int n, int k, double radius = 1.0) {
   }
   return mesh::PolyMesh::build(p, faces);
 }
+
+/// A closed fan of n sectors of k × k quads around vertex 0, an interior EV of valence n, its spokes of length
+/// `radius`; the boundary has corners (the sectors' outer corners) and smooth boundary vertices only. With k = 1
+/// the EV's faces reach the boundary.
+inline mesh::PolyMesh closed_fan(int n, int k, double radius = 1.0) { return fan(n, 2 * M_PI, true, k, radius); }
+
+/// An open fan of `faces` sectors of 2 × 2 quads around vertex 0, a boundary vertex with that many faces and interior
+/// angle `angle`, its boundary spokes along the angles 0 and `angle`.
+inline mesh::PolyMesh open_fan(int faces, double angle, double radius = 1.0) { return fan(faces, angle, false, 2, radius); }
 
 /// A 4×4-element degree-p square [0,1]² whose interior control points are moved by up to 0.04: a non-affine map.
 inline basis::Geometry distorted_square(int p, unsigned seed) {
