@@ -36,20 +36,6 @@ void parse_coarse_split(const std::string& text, basis::BackendOptions& options)
   options.split_v = v;
 }
 
-// "41,7": 1-based vertex numbers as the OBJ's f lines write them, returned 0-based.
-std::vector<Index> parse_vertex_numbers(const std::string& option, const std::string& list) {
-  std::vector<Index> vertices;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    const bool digits = !item.empty() && item.size() <= 12 && item.find_first_not_of("0123456789") == std::string::npos;
-    const long long v = digits ? std::stoll(item) : 0;
-    if (v < 1) throw InputError(option + ": '" + item + "' is not a vertex number (1, 2, ... as the OBJ's f lines number them)");
-    vertices.push_back(static_cast<Index>(v - 1));
-  }
-  if (vertices.empty() || list.back() == ',') throw InputError(option + ": '" + list + "' is not a comma-separated list of vertex numbers");
-  return vertices;
-}
 }  // namespace
 
 Discretisation make_discretisation(const DiscretisationOptions& o) {
@@ -77,6 +63,20 @@ double predicted_elements(const DiscretisationOptions& o, const Discretisation& 
   const int steps = refine_steps(o, d) + (o.count("presubdivide") ? o.presubdivide : 0);
   return (d.net ? static_cast<double>(d.net->num_faces()) : 1.0) * d.options.split_u * d.options.split_v *
          std::pow(4.0, steps);
+}
+
+std::vector<Index> parse_vertex_numbers(const std::string& option, const std::string& list) {
+  std::vector<Index> vertices;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const bool digits = !item.empty() && item.size() <= 12 && item.find_first_not_of("0123456789") == std::string::npos;
+    const long long v = digits ? std::stoll(item) : 0;
+    if (v < 1) throw InputError(option + ": '" + item + "' is not a vertex number (1, 2, ... as the OBJ's f lines number them)");
+    vertices.push_back(static_cast<Index>(v - 1));
+  }
+  if (vertices.empty() || list.back() == ',') throw InputError(option + ": '" + list + "' is not a comma-separated list of vertex numbers");
+  return vertices;
 }
 
 std::vector<Index> parse_intervals(const std::string& list) {

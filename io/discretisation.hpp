@@ -56,6 +56,10 @@ double predicted_elements(const DiscretisationOptions& o, const Discretisation& 
 /// "3,4" → {3, 4}; InputError naming --refine-intervals for an item that is not a 0-based index.
 std::vector<Index> parse_intervals(const std::string& list);
 
+/// "41,7" → {40, 6}: vertex numbers from 1 as an OBJ's f lines write them, returned 0-based; InputError naming
+/// `option` for an item that is not one, or an empty list.
+std::vector<Index> parse_vertex_numbers(const std::string& option, const std::string& list);
+
 /// The geometry refined as asked (uniformly, or --refine-intervals' refine-and-smooth steps); check(elements, dofs)
 /// runs on the refined space before anything is assembled on it (a program's memory check). keep_steps (--solver
 /// mg): each step's prolongation too (Refinement::steps); UnsupportedError for a backend whose spaces are not nested.

@@ -28,6 +28,7 @@
 #include "core/error.hpp"
 #include "fem/memory.hpp"
 #include "io/bv.hpp"
+#include "io/discretisation.hpp"
 #include "io/program.hpp"
 #include "io/report.hpp"
 #include "io/net_writer.hpp"
@@ -44,7 +45,7 @@ namespace {
 struct Options {
   std::string basis = "polyhedral", mesh, vtu, bv, json, three_valent, obj, vtu_format = "bezier", net_vtu;
   int presubdivide = 0, degree = 3, samples = 4, vtu_degree = 6;
-  std::string cc_boundary = "natural";
+  std::string cc_boundary = "natural", cc_corners;
   bool degree_raise = false, quiet = false;
   std::vector<std::string> given;  ///< backend options given on the command line (names without dashes)
   nlohmann::json run_info;         ///< io::run_info: version, revision, every effective setting
@@ -108,6 +109,9 @@ int run(const Options& o) {
   if (std::find(o.given.begin(), o.given.end(), "presubdivide") != o.given.end()) bo.presubdivide = o.presubdivide;
   bo.degree_raise = o.degree_raise;
   if (std::find(o.given.begin(), o.given.end(), "cc-boundary") != o.given.end()) bo.cc_boundary = o.cc_boundary;
+  if (std::find(o.given.begin(), o.given.end(), "cc-corners") != o.given.end()) {
+    bo.cc_corners = iga::io::parse_vertex_numbers("--cc-corners", o.cc_corners);
+  }
   const iga::mesh::PolyMesh net = iga::mesh::read_obj(o.mesh);
   {
     // Size before work: --presubdivide multiplies the faces by four per step; the .vtu samples² points each.
@@ -187,6 +191,7 @@ int main(int argc, char** argv) {
   app.add_option("--basis", o.basis, "basis backend (" + iga::basis::backend_names() + ")")->check(CLI::IsMember(backend_list))->capture_default_str();
   app.add_option("--mesh", o.mesh, "Wavefront OBJ control net (a quad grid for bspline)")->required()->check(iga::io::input_file());
   app.add_option("--cc-boundary", o.cc_boundary, "cc: natural (OpenSubdiv's boundary rule) or clamped (one ring of ghost control points, drawn with --net)")->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
+  app.add_option("--cc-corners", o.cc_corners, "cc with --cc-boundary clamped: net vertices (from 1, comma-separated) the limit domain keeps as corners (README)")->check(iga::io::non_blank());
   app.add_option("--presubdivide", o.presubdivide, "Catmull-Clark steps applied to the net first (one makes any net with valences <= 8 admissible for polyhedral)")
       ->check(iga::io::whole_number(0, 6))->capture_default_str();
   app.add_option("--degree", o.degree, "bspline: degree per direction")->check(iga::io::whole_number(1, 12))->capture_default_str();
@@ -209,7 +214,7 @@ int main(int argc, char** argv) {
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
-  for (const char* option : {"degree", "presubdivide", "degree-raise", "cc-boundary"}) {
+  for (const char* option : {"degree", "presubdivide", "degree-raise", "cc-boundary", "cc-corners"}) {
     if (app.count(std::string("--") + option) > 0) o.given.emplace_back(option);
   }
   return iga::io::run_program("iga-geometry", [&] { return run(o); });
