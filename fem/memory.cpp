@@ -1,55 +1,12 @@
 #include "fem/memory.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iomanip>
-#include <limits>
-#include <sstream>
 #include <string>
 
 #include "core/error.hpp"
 
 namespace iga::fem {
-
-namespace {
-// A value in kB from a "Key:   123 kB" line of a /proc file, or -1.
-double proc_kb(const char* file, const std::string& key) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.compare(0, key.size(), key) == 0 && line.size() > key.size() && line[key.size()] == ':') {
-      return std::strtod(line.c_str() + key.size() + 1, nullptr);
-    }
-  }
-  return -1.0;
-}
-
-double limit_of(int resource) {
-  rlimit l{};
-  if (getrlimit(resource, &l) != 0 || l.rlim_cur == RLIM_INFINITY) return std::numeric_limits<double>::infinity();
-  return static_cast<double>(l.rlim_cur);
-}
-
-std::string gib(double bytes) {
-  std::ostringstream s;
-  s << std::setprecision(bytes < 1e10 ? 2 : 3) << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
-  return s.str();
-}
-}  // namespace
-
-double available_memory() {
-  double available = std::numeric_limits<double>::infinity();
-  const double system_kb = proc_kb("/proc/meminfo", "MemAvailable");
-  if (system_kb > 0) available = system_kb * 1024.0;
-  const double used_virtual = std::max(0.0, proc_kb("/proc/self/status", "VmSize")) * 1024.0;
-  const double used_data = std::max(0.0, proc_kb("/proc/self/status", "VmData")) * 1024.0;
-  available = std::min(available, limit_of(RLIMIT_AS) - used_virtual);
-  available = std::min(available, limit_of(RLIMIT_DATA) - used_data);
-  return std::max(0.0, available);
-}
 
 double poisson_memory(double elements, int local_dofs) {
   const double n = std::max(elements, 1.0);
@@ -67,7 +24,7 @@ double vtu_memory(double elements, int samples) {
 void check_memory(double bytes, double limit, const std::string& what, const std::string& advice) {
   const double available = limit > 0 ? limit : available_memory();
   if (!(bytes > available)) return;
-  throw InputError(what + " would need about " + gib(bytes) + " of memory, more than the " + gib(available) +
+  throw InputError(what + " would need about " + gib_text(bytes) + " of memory, more than the " + gib_text(available) +
                    (limit > 0 ? " of --max-memory" : " available") + " (" + advice + ")");
 }
 

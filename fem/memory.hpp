@@ -4,12 +4,12 @@
 // or the kernel's OOM killer after seconds of work.
 #include <string>
 
+#include "core/memory.hpp"
+
 namespace iga::fem {
 
-/// Bytes this process may still allocate: the smaller of the memory the system reports available
-/// (MemAvailable in /proc/meminfo) and the address-space and data-segment limits (ulimit -v / -d) less what
-/// the process already uses. Infinity when nothing is known.
-double available_memory();
+/// core/memory.hpp's, here too.
+using ::iga::available_memory;
 
 /// A lower estimate of the peak memory of a Poisson solve with `elements` elements of at most `local_dofs`
 /// functions each (about as many dofs as elements): the element contexts and the sparse matrix with its

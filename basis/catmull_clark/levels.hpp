@@ -54,11 +54,14 @@ class CatmullClarkLevels final : public CatmullClarkHierarchy {
   /// Levels built so far.
   int built_levels() const;
   bool level_built(int level) const override { return level < built_levels(); }
+  std::string depth_limit() const override;
 
  private:
   struct Level;
   const Level& level(int l) const;
   std::unique_ptr<Level> make_level(const Level& coarse) const;
+  /// UnsupportedError when level m (4^m times level 0's faces) is predicted not to fit in the available memory.
+  void check_level_memory(int m) const;
   static void fill_support(Level& level);
 
   int rotation(int level, Key cell) const override { return space(level).rotation(cell); }

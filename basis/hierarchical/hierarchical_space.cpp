@@ -35,7 +35,7 @@ void HierarchicalSpace::trim_and_check_depth() {
   if (static_cast<int>(refined_.size()) > hierarchy_->max_level()) {
     throw UnsupportedError("hierarchical space: level " + std::to_string(refined_.size()) +
                            " is deeper than the " + std::to_string(hierarchy_->max_level()) + " levels the '" +
-                           hierarchy_->name() + "' hierarchy can index (and resolve in double precision)");
+                           hierarchy_->name() + "' hierarchy " + hierarchy_->depth_limit());
   }
 }
 

@@ -38,6 +38,8 @@ class LevelHierarchy {
   virtual std::string name() const = 0;
   /// The deepest level the scheme can index (cells and functions of deeper levels would overflow Key, or knots would round together).
   virtual int max_level() const = 0;
+  /// Why max_level() is the deepest, completing "the N levels the '<name>' hierarchy ..." in messages.
+  virtual std::string depth_limit() const { return "can index (and resolve in double precision)"; }
   /// Whether level l is ready without a build. Hierarchies that build a whole level on first use (Catmull–Clark: a
   /// level has 4^l times the elements of level 0) say false for the levels not built yet, so that the adaptive
   /// loop's time forecast (io::StepForecast) can count the build in the step that needs it.

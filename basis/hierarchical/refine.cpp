@@ -20,7 +20,7 @@ class Refiner {
     if (is_refined(level, cell)) return 0;
     if (level + 1 > h_.max_level()) {
       throw UnsupportedError("local refinement: level " + std::to_string(level + 1) + " is deeper than the " +
-                             std::to_string(h_.max_level()) + " levels the '" + h_.name() + "' hierarchy can index (and resolve in double precision)");
+                             std::to_string(h_.max_level()) + " levels the '" + h_.name() + "' hierarchy " + h_.depth_limit());
     }
     Index count = 0;
     const int k = level - m_ + 2;  // level of the support extension

@@ -8,6 +8,8 @@
 #include "support/paths.hpp"
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <cmath>
@@ -375,3 +377,50 @@ TEST(HierarchicalCatmullClark, Registry) {
 }
 
 }  // namespace
+
+// Item 5 of the whole-net levels: a level predicted not to fit is refused before it is built, with what it would
+// need and what is available (UnsupportedError, which the adaptive loop reports as the reason it stopped). The
+// limit is the process's address space (ulimit -v), 200 MB above what it uses: levels 4 and 5 of l_shape.obj
+// (12,288 and 49,152 faces, 31 and 123 MB predicted) are built, level 6 (196,608 faces, 0.49 GB predicted, 0.56 GB
+// measured) is refused.
+// Not under ASan, whose shadow memory needs an unlimited address space.
+TEST(HierarchicalCatmullClark, LevelPredictedNotToFitIsRefused) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "an address-space limit breaks ASan";
+#else
+  auto level0 = std::make_shared<const basis::catmull_clark::CatmullClarkSpace>(
+      mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/l_shape.obj"));
+  const CatmullClarkLevels h(level0);
+  ASSERT_GE(h.max_level(), 6);
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &old), 0);
+  long vm_kb = 0;
+  {
+    std::FILE* f = std::fopen("/proc/self/status", "r");
+    ASSERT_NE(f, nullptr);
+    char line[256];
+    while (std::fgets(line, sizeof line, f)) {
+      if (std::sscanf(line, "VmSize: %ld kB", &vm_kb) == 1) break;
+    }
+    std::fclose(f);
+  }
+  ASSERT_GT(vm_kb, 0);
+  rlimit low = old;
+  low.rlim_cur = static_cast<rlim_t>(vm_kb) * 1024 + 200l * 1024 * 1024;
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &low), 0);
+  std::string message;
+  bool level4 = false;
+  try {
+    level4 = h.space(4).num_elements() == 48 * 256;
+    h.space(6);
+  } catch (const UnsupportedError& e) {
+    message = e.what();
+  }
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &old), 0);
+  EXPECT_TRUE(level4);
+  // Level 5 (49,152 faces, 0.12 GB predicted) still fits; level 6 does not.
+  EXPECT_EQ(message.find("Catmull–Clark levels: level 6 (the whole net refined 6 times, 196608 faces) would need about 0.46 GiB"), 0u)
+      << message;
+  EXPECT_EQ(h.built_levels(), 6);
+#endif
+}
