@@ -62,6 +62,7 @@ SparseCatmullClarkLevels::SparseCatmullClarkLevels(std::shared_ptr<const Catmull
     ++max_level_;
   }
   cells_.resize(static_cast<std::size_t>(max_level_) + 1);
+  supports_.resize(static_cast<std::size_t>(max_level_) + 1);
   roots_.resize(static_cast<std::size_t>(net.num_faces()));
   root_ready_ = std::make_unique<std::atomic<const Cell*>[]>(roots_.size());
   for (std::size_t f = 0; f < roots_.size(); ++f) root_ready_[f].store(nullptr, std::memory_order_relaxed);
@@ -288,6 +289,15 @@ void SparseCatmullClarkLevels::support(int l, Key function, std::vector<Key>& ce
     cells.assign(support_cells_.begin() + support_offsets_[f], support_cells_.begin() + support_offsets_[f + 1]);
     return;
   }
+  auto& known = supports_[static_cast<std::size_t>(l)];
+  {
+    const std::shared_lock<std::shared_mutex> lock(mutex_);
+    const auto it = known.find(function);
+    if (it != known.end()) {
+      cells.assign(it->second.begin(), it->second.end());
+      return;
+    }
+  }
   // A coarse cell next to the function's vertex: the fine faces whose rings hold the vertex are children of faces
   // in that cell's ring.
   const VertexOrigin o = vertex_origin(bounds_, l, function);
@@ -308,19 +318,23 @@ void SparseCatmullClarkLevels::support(int l, Key function, std::vector<Key>& ce
     const bool touches = std::any_of(q.begin(), q.end(), [&](int u) { return near[static_cast<std::size_t>(u)] != 0; });
     if (touches && in_domain(l, m.face[f])) cells.push_back(m.face[f]);
   }
+  const std::unique_lock<std::shared_mutex> lock(mutex_);
+  known.try_emplace(function, cells);
 }
 
-// The hierarchical builds ask refinement() for the four slots of a cell in turn, with deeper levels in between: the
-// last refined neighbourhood per level and thread is kept, so the local step runs once per cell, not four times.
+// The hierarchical builds ask refinement() for the four slots of a cell in turn, with deeper levels in between, and
+// for neighbouring cells in between too: the last 16 refined neighbourhoods per level and thread are kept
+// (direct-mapped by the cell key's low bits, a few MB per thread), so the local step mostly runs once per cell.
 const RefinedMesh& SparseCatmullClarkLevels::refined(int l, Key c) const {
   struct Entry {
     std::uint64_t owner = 0;
     Key cell = -1;
     RefinedMesh mesh;
   };
+  constexpr std::size_t kWays = 16;  // per level, direct-mapped by the cell's low bits
   thread_local std::vector<Entry> cache;
-  if (cache.size() <= static_cast<std::size_t>(l)) cache.resize(static_cast<std::size_t>(l) + 1);
-  Entry& e = cache[static_cast<std::size_t>(l)];
+  if (cache.size() < kWays * (static_cast<std::size_t>(l) + 1)) cache.resize(kWays * (static_cast<std::size_t>(l) + 1));
+  Entry& e = cache[kWays * static_cast<std::size_t>(l) + (static_cast<std::size_t>(c) & (kWays - 1))];
   if (e.owner != id_ || e.cell != c) {
     e.mesh = refine_local(cell(l, c).mesh, bounds_, l);
     e.owner = id_;

@@ -74,6 +74,9 @@ class SparseCatmullClarkLevels final : public CatmullClarkHierarchy {
   std::vector<int> part_;                               // level 0: 4 per element, native sides: part or -1
   mutable std::shared_mutex mutex_;
   mutable std::vector<std::unordered_map<Key, std::unique_ptr<Cell>, hierarchical::KeyHash>> cells_;  // levels >= 1
+  // Levels >= 1: the supports found so far (support() refines a coarse cell's neighbourhood to find one; the
+  // hierarchical builds ask for the same functions again at every step).
+  mutable std::vector<std::unordered_map<Key, std::vector<Key>, hierarchical::KeyHash>> supports_;
   // Level 0 (domain and ghost faces of the extended net), looked up without a lock once made.
   mutable std::vector<std::unique_ptr<Cell>> roots_;
   std::unique_ptr<std::atomic<const Cell*>[]> root_ready_;
