@@ -35,7 +35,6 @@ void parse_coarse_split(const std::string& text, basis::BackendOptions& options)
   options.split_u = u;
   options.split_v = v;
 }
-
 }  // namespace
 
 Discretisation make_discretisation(const DiscretisationOptions& o) {

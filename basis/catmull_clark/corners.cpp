@@ -2,6 +2,7 @@
 #include "basis/catmull_clark/corners.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -150,7 +151,10 @@ Geometry with_corners(const Geometry& geometry, std::span<const Index> corners, 
   // The corners are placed one after the other: each moves its vertex and its ghost, which lie in no other corner's
   // one ring (they would share a face of the extended net, so the two extraordinary vertices a domain face or a
   // boundary edge, and the net would have needed the global step refused above).
-  for (const Index v : corners) {
+  std::vector<Index> unique(corners.begin(), corners.end());  // a vertex named twice is one corner
+  std::sort(unique.begin(), unique.end());
+  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  for (const Index v : unique) {
     const std::string where = "vertex " + std::to_string(v + 1) + ": ";
     if (v < 0 || v >= net_vertices) {
       throw InputError(name + ": corner vertex " + std::to_string(v + 1) + " is not a vertex of the net (it has " +

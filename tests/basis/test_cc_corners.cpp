@@ -116,6 +116,10 @@ TEST(CornerLShape, ReflexCornerAtOneOneAlongTheAxes) {
   const Index corner_vertex[] = {40};  // v 1 1 0, the 41st vertex
   const Geometry g = with_corners(make_catmull_clark_geometry(net, "l_shape.obj", BoundaryRule::kClamped), corner_vertex, "l_shape.obj");
   EXPECT_LT(tangent_error(g, Eigen::Vector2d(1, 1), {{0.0, 1.0}, {1.0, 0.0}}, std::ldexp(1.0, -24)), 1e-3);
+  // Named twice, it is one corner (placing it again from its moved control point would move it off).
+  const Index twice[] = {40, 40};
+  const Geometry g2 = with_corners(make_catmull_clark_geometry(net, "l_shape.obj", BoundaryRule::kClamped), twice, "l_shape.obj");
+  EXPECT_EQ((g2.control_points() - g.control_points()).norm(), 0.0);
 }
 
 TEST(CornerErrors, BadVerticesAndRulesAreNamed) {
