@@ -218,6 +218,29 @@ TEST_F(IgaGeometry, CatmullClarkRegularElementsAndSkippedOnes) {
   EXPECT_NE(r.err.find("not in the .bv"), std::string::npos) << r.err;
 }
 
+// --cc-corners (README): the clamped L-shape's reflex corner is a point of the drawn limit domain, (1, 1), only
+// when it is kept as a corner (the linear cells sample every element's corners exactly).
+TEST_F(IgaGeometry, CatmullClarkCornerVertexIsOnTheDrawnDomain) {
+  const std::string net = std::string(IGA_SOURCE_DIR) + "/data/meshes/l_shape.obj";
+  const auto distance_to_corner = [&](const std::string& extra) {
+    const Outcome r = run("--basis cc --mesh '" + net + "' --cc-boundary clamped --vtu corner.vtu --vtu-format linear "
+                          "--vtu-samples 4 --quiet " + extra);
+    EXPECT_EQ(r.code, 0) << r.err;
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->SetFileName((dir_ / "corner.vtu").string().c_str());
+    reader->Update();
+    double best = 1e300;
+    for (vtkIdType i = 0; i < reader->GetOutput()->GetNumberOfPoints(); ++i) {
+      double x[3];
+      reader->GetOutput()->GetPoint(i, x);
+      best = std::min(best, std::hypot(x[0] - 1, x[1] - 1));
+    }
+    return best;
+  };
+  EXPECT_LT(distance_to_corner("--cc-corners 41"), 1e-12);
+  EXPECT_GT(distance_to_corner(""), 1e-3);
+}
+
 TEST_F(IgaGeometry, ErrorsAreOneLineAndNonZero) {
   // (Every configuration of the paper has a mask now: the former "polar fan has no mask" case is gone.)
   // An unsupported configuration: each offending face named, with the suggestion.
