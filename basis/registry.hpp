@@ -97,6 +97,14 @@ struct Backend {
       refine_marked;
   /// The default quadrature specification for a degree (quadrature::make_rule_provider).
   std::function<std::string(int degree)> default_quadrature;
+  /// Whether a program that can impose Dirichlet data weakly (iga-poisson's Nitsche method) should, unless told
+  /// otherwise, with these options; empty: never. (cc with the clamped rule: its strong conditions next to boundary
+  /// extraordinary vertices are refused, and it is the fastest configuration.)
+  std::function<bool(const BackendOptions&)> prefers_weak_dirichlet;
+  /// The local refinements toward the irregular elements (Family::Irregular; --grade-evs) programs apply after
+  /// `refine` uniform steps when none are asked for and the mesh has such elements; empty: none. Only with
+  /// refine_marked.
+  std::function<int(const BackendOptions&, int refine)> default_grading;
   /// Bézier patches of the geometry (elements that are not polynomial are counted in facts "bv_skipped").
   std::function<std::vector<BezierPatch>(const Geometry&, const BackendOptions&, BackendFacts&)> bezier_patches;
 };

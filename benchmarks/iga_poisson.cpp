@@ -458,6 +458,20 @@ int study(const Options& o) {
   return iga::bench::run_study(so, hooks);
 }
 
+// Defaults that depend on the basis, before the option rules and the report's settings see them: without
+// --dirichlet-method, the conditions are imposed weakly where the backend prefers it (basis::Backend::
+// prefers_weak_dirichlet; cc with the clamped rule), strongly otherwise; --adaptive refines by its estimator, so no
+// a priori grading (--grade-evs) by default.
+void resolve_backend_defaults(CLI::App& app, Options& o) {
+  if (app.count("--dirichlet-method") == 0) {
+    const iga::basis::Backend& backend = iga::basis::backend(o.d.basis);
+    const bool weak = backend.prefers_weak_dirichlet && backend.prefers_weak_dirichlet(iga::io::backend_options(o.d));
+    o.dirichlet_method = weak ? "nitsche" : "strong";
+    app.get_option("--dirichlet-method")->default_str(o.dirichlet_method);
+  }
+  if (o.adaptive >= 0 && app.count("--grade-evs") == 0) o.d.grade_evs = 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -477,7 +491,7 @@ int main(int argc, char** argv) {
   app.add_option("--neumann", o.neumann, "∂u/∂n on the Neumann parts, g(x,y,z,nx,ny,nz)")->check(iga::io::non_blank());
   app.add_option("--neumann-boundary", o.neumann_boundary, "comma-separated boundary parts with Neumann data (bspline: v0,u1,v1,u0; cc: b<loop>.<segment> between corners; or indices)")->check(iga::io::non_blank());
   app.add_option("--neumann-where", o.neumann_where, "boundary edges whose midpoint makes this expression > 0 get Neumann data, e.g. 'x > 0.999'")->check(iga::io::non_blank());
-  app.add_option("--dirichlet-method", o.dirichlet_method, "strong (L2 projection onto the boundary traces, eliminated) or nitsche (weak, symmetric Nitsche: needs no trace space; for --cc-boundary clamped at boundary extraordinary vertices)")->check(CLI::IsMember({"strong", "nitsche"}))->capture_default_str();
+  app.add_option("--dirichlet-method", o.dirichlet_method, "strong (L2 projection onto the boundary traces, eliminated) or nitsche (weak, symmetric Nitsche: needs no trace space; for --cc-boundary clamped at boundary extraordinary vertices); default: nitsche for cc with --cc-boundary clamped, strong otherwise")->check(CLI::IsMember({"strong", "nitsche"}));
   app.add_option("--nitsche-penalty", o.nitsche_penalty, "--dirichlet-method nitsche: a fixed penalty γ in γ/h (h the side length); 0: each element's own from its local eigenvalue estimate (coercive by construction)")->check(iga::io::finite_number(0.0))->capture_default_str();
   app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms")->check(iga::io::non_blank());
@@ -509,10 +523,11 @@ int main(int argc, char** argv) {
   iga::io::CommonOptions common{"iga-poisson"};
   iga::io::add_common_options(app, common);
   if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
+  iga::io::record_given_options(app, o.d);
+  resolve_backend_defaults(app, o);
   if (const auto code = iga::io::check_option_rules(app, common.program)) return *code;
   o.quiet = common.quiet;
   o.run_info = iga::io::run_info(app, common.program);
-  iga::io::record_given_options(app, o.d);
   o.vtu_given = app.count("--vtu") > 0;
   o.json_given = app.count("--json") > 0;
   // --solver petsc: on the ranks of mpirun (one without it), rank 0 speaking for all.

@@ -37,15 +37,21 @@ void parse_coarse_split(const std::string& text, basis::BackendOptions& options)
 }
 }  // namespace
 
+basis::BackendOptions backend_options(const DiscretisationOptions& o) {
+  basis::BackendOptions options;
+  if (o.count("degree")) options.degree = o.degree;
+  if (o.count("presubdivide")) options.presubdivide = o.presubdivide;
+  if (o.count("geometry")) options.geometry = o.geometry;
+  if (o.count("cc-boundary")) options.cc_boundary = o.cc_boundary;
+  if (o.count("cc-enrich")) options.cc_enrich = o.cc_enrich;
+  return options;
+}
+
 Discretisation make_discretisation(const DiscretisationOptions& o) {
   Discretisation d;
   d.backend = &basis::backend(o.basis);
   basis::check_options(*d.backend, o.given);
-  if (o.count("degree")) d.options.degree = o.degree;
-  if (o.count("presubdivide")) d.options.presubdivide = o.presubdivide;
-  if (o.count("geometry")) d.options.geometry = o.geometry;
-  if (o.count("cc-boundary")) d.options.cc_boundary = o.cc_boundary;
-  if (o.count("cc-enrich")) d.options.cc_enrich = o.cc_enrich;
+  d.options = backend_options(o);
   if (o.count("coarse-split")) parse_coarse_split(o.coarse_split, d.options);
   if (o.count("cc-corners")) d.options.cc_corners = parse_vertex_numbers("--cc-corners", o.cc_corners);
   d.options.net_name = o.mesh;
@@ -116,13 +122,17 @@ void append_step(basis::Refinement& refined, basis::Refinement next, bool keep_s
 // append_step keeps them). Refining only the elements at the vertices leaves the next ring
 // at the coarse level, where the space lacks the quadratics near valences >= 5 (square_evs.obj, --refine 4: 1.2e-8
 // against 5.6e-9 with the wider rings).
-void grade_toward_extraordinary_vertices(const DiscretisationOptions& o, const Discretisation& d,
+// Without --grade-evs the backend's default_grading (cc: --refine + 3 with the clamped rule), and a mesh without
+// extraordinary vertices is simply not graded.
+void grade_toward_extraordinary_vertices(const DiscretisationOptions& o, const Discretisation& d, int steps,
                                          basis::Refinement& refined, basis::BackendFacts& facts, bool keep_steps) {
-  if (o.grade_evs <= 0) return;
+  const bool asked = o.grade_evs >= 0;
+  const int levels = asked ? o.grade_evs : d.backend->default_grading ? d.backend->default_grading(d.options, steps) : 0;
+  if (levels <= 0) return;
   if (!d.backend->refine_marked) {
     throw UnsupportedError("--grade-evs: --basis " + d.backend->name + " has no local refinement");
   }
-  for (int k = 0; k < o.grade_evs; ++k) {
+  for (int k = 0; k < levels; ++k) {
     std::vector<Index> marked;
     const basis::Space& s = refined.geometry.space();
     std::vector<char> near(static_cast<std::size_t>(s.num_dofs()), 0);
@@ -138,6 +148,7 @@ void grade_toward_extraordinary_vertices(const DiscretisationOptions& o, const D
         marked.push_back(e);
       }
     }
+    if (marked.empty() && !asked) return;
     if (marked.empty()) {
       throw InputError("--grade-evs: the " + (o.mesh.empty() ? std::string("geometry") : o.mesh) +
                        " has no extraordinary vertex to grade toward");
@@ -165,7 +176,7 @@ basis::Refinement refined_geometry(const DiscretisationOptions& o, const Discret
   for (int k = 0; !intervals.empty() && k < steps; ++k) {
     append_step(refined, refine::refine_smooth_tensor(refined.geometry, intervals, intervals), keep_steps);
   }
-  grade_toward_extraordinary_vertices(o, d, refined, facts, keep_steps);
+  grade_toward_extraordinary_vertices(o, d, steps, refined, facts, keep_steps);
   if (check) check(refined.geometry.space().num_elements(), refined.geometry.space().num_dofs());
   return refined;
 }

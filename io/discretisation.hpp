@@ -28,7 +28,7 @@ struct DiscretisationOptions {
   std::string coarse_split;       ///< --coarse-split (bspline): "U,V", parts per knot interval along u and v
   std::string quadrature;         ///< --quadrature; empty: the backend's default for the degree
   int degree = 3, refine = -1, presubdivide = 0;  ///< refine < 0: the backend's default
-  int grade_evs = 0;  ///< --grade-evs (cc): local refinements of the elements at extraordinary vertices after --refine
+  int grade_evs = -1;  ///< --grade-evs (cc): local refinements toward extraordinary vertices after --refine; < 0: the backend's default_grading
   /// The backend options given on the command line (names without dashes): only these reach the backend.
   std::vector<std::string> given;
   bool count(const std::string& option) const;
@@ -45,6 +45,10 @@ struct Discretisation {
 /// The backend (UnsupportedError for an unknown one), its options checked against what it takes (InputError naming
 /// the first it does not take), and the net read (InputError naming file and line).
 Discretisation make_discretisation(const DiscretisationOptions& o);
+
+/// The backend options of the words given (--degree, --cc-boundary, ...; not the lists, which make_discretisation
+/// parses). Never throws for a backend the command line's --basis check admits.
+basis::BackendOptions backend_options(const DiscretisationOptions& o);
 
 /// --refine, or the backend's default number of steps.
 int refine_steps(const DiscretisationOptions& o, const Discretisation& d);

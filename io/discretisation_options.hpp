@@ -45,7 +45,8 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
       ->check(non_blank());
   app.add_option("--cc-boundary", o.cc_boundary,
                  "cc: natural (the limit boundary rule of OpenSubdiv: u_nn = 0 on the boundary, L2 rate 2.5) or clamped (one "
-                 "ring of ghost control points: open knot vector in the normal direction, full order)")
+                 "ring of ghost control points: open knot vector in the normal direction, full order; in iga-poisson it brings "
+                 "Nitsche's method and --grade-evs by default)")
       ->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
   app.add_option("--cc-enrich", o.cc_enrich,
                  "cc: none or quadratic (three functions per extraordinary vertex, quadratics in the physical coordinates "
@@ -59,8 +60,10 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
       ->check(non_blank());
   app.add_option("--grade-evs", o.grade_evs,
                  "cc: after --refine, refine the elements at extraordinary vertices N more times (hierarchical, with the "
-                 "neighbours admissibility class 2 needs): a priori grading toward the vertices, one solve")
-      ->check(whole_number(1, 40));
+                 "neighbours admissibility class 2 needs): a priori grading toward the vertices, one solve; default: "
+                 "--refine + 3 with --cc-boundary clamped (0: none; none with --cc-enrich quadratic, --adaptive, or on nets "
+                 "without extraordinary vertices)")
+      ->check(whole_number(0, 40));
   app.add_option("--presubdivide", o.presubdivide,
                  "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes "
                  "<= 8 admissible)")

@@ -137,6 +137,14 @@ Backend catmull_clark_backend() {
   b.refine = refine_net;
   b.refine_marked = refine_hierarchical;
   b.default_quadrature = [](int) { return std::string("gauss:4"); };
+  // With the clamped rule, what reaches an accuracy fastest on square_evs.obj (valences 3, 5, 6; README,
+  // --grade-evs): Nitsche's method, graded toward the extraordinary vertices. The rule itself stays the user's
+  // choice: it moves the domain's boundary near boundary extraordinary vertices (square_evs.obj: by up to 0.013).
+  // Natural-rule levels are whole nets (slow), and the enriched space has no hierarchical form: neither is graded.
+  b.prefers_weak_dirichlet = [](const BackendOptions& o) { return o.cc_boundary == "clamped"; };
+  b.default_grading = [](const BackendOptions& o, int refine) {
+    return o.cc_boundary == "clamped" && o.cc_enrich != "quadratic" ? refine + 3 : 0;
+  };
   b.bezier_patches = regular_patches;
   return b;
 }

@@ -166,11 +166,29 @@ TEST_F(IgaPoisson, GradingTowardExtraordinaryVertices) {
                            "--quadrature tiles:4:8 --source '2*pi^2*sin(pi*x)*sin(pi*y) - 2*x' "
                            "--exact 'sin(pi*x)*sin(pi*y) + x*y^2' --threads 1 --vtu none ";
   ASSERT_EQ(run(base + "--refine 2 --grade-evs 4 --json graded.json").code, 0);
-  ASSERT_EQ(run(base + "--refine 3 --json uniform.json").code, 0);
+  ASSERT_EQ(run(base + "--refine 3 --grade-evs 0 --json uniform.json").code, 0);
   const nlohmann::json g = report("graded.json"), u = report("uniform.json");
   EXPECT_EQ(g["graded_levels"], 4);
   EXPECT_LT(g["dofs"].get<double>(), u["dofs"].get<double>());
   EXPECT_LT(g["l2_error"].get<double>(), 0.15 * u["l2_error"].get<double>());
+}
+
+// --cc-boundary clamped alone takes the measured fastest path (README, "The defaults of --basis cc"): Nitsche's
+// method and --refine + 3 graded levels, the same run as with both given; the natural rule stays strong and uniform.
+TEST_F(IgaPoisson, ClampedCatmullClarkDefaultsToNitscheAndGrading) {
+  const std::string base = "--quiet --basis cc --mesh '" + std::string(IGA_SOURCE_DIR) +
+                           "/data/meshes/square_evs.obj' --problem sine --refine 1 --threads 1 --vtu none ";
+  ASSERT_EQ(run(base + "--cc-boundary clamped --json defaults.json").code, 0);
+  ASSERT_EQ(run(base + "--cc-boundary clamped --dirichlet-method nitsche --grade-evs 4 --json explicit.json").code, 0);
+  ASSERT_EQ(run(base + "--json natural.json").code, 0);
+  const nlohmann::json d = report("defaults.json"), e = report("explicit.json"), n = report("natural.json");
+  EXPECT_EQ(d["graded_levels"], 4);
+  EXPECT_EQ(d["settings"]["dirichlet-method"], "nitsche");
+  EXPECT_EQ(d["dofs"], e["dofs"]);
+  EXPECT_NEAR(d["l2_error"].get<double>(), e["l2_error"].get<double>(), 1e-12);
+  EXPECT_EQ(n["settings"]["dirichlet-method"], "strong");
+  EXPECT_FALSE(n.contains("graded_levels"));
+  EXPECT_LT(d["l2_error"].get<double>(), 0.05 * n["l2_error"].get<double>());
 }
 
 // Adaptive Catmull–Clark on the L-shape whose reflex corner (vertex 41, (1, 1)) is kept as a corner of the limit
@@ -205,7 +223,7 @@ TEST_F(IgaPoisson, AdaptiveCatmullClarkReachesTheOptimalRateAtACornerVertex) {
   // Uniform refinement: the singular rate.
   std::vector<double> udofs, uerr;
   for (int k = 2; k <= 4; ++k) {
-    ASSERT_EQ(run(base + "--refine " + std::to_string(k) + " --json uniform.json").code, 0);
+    ASSERT_EQ(run(base + "--refine " + std::to_string(k) + " --grade-evs 0 --json uniform.json").code, 0);
     const nlohmann::json u = report("uniform.json");
     udofs.push_back(u["dofs"].get<double>());
     uerr.push_back(u["h1_error"].get<double>());
