@@ -23,11 +23,13 @@ TARGETS = (1e-6, 1e-8)
 CONFIGS = [
     # name, arguments, levels
     ("cc natural, 6x6 net", ["--basis", "cc", "--mesh", "data/meshes/square_6x6.obj", "--cc-boundary", "natural"], range(0, 6)),
-    ("cc clamped, 6x6 net", ["--basis", "cc", "--mesh", "data/meshes/square_6x6.obj", "--cc-boundary", "clamped"], range(0, 5)),
+    ("cc clamped, 6x6 net", ["--basis", "cc", "--mesh", "data/meshes/square_6x6.obj", "--cc-boundary", "clamped",
+                             "--dirichlet-method", "strong"], range(0, 5)),
     ("cc natural, square_evs (Nitsche)", ["--basis", "cc", "--mesh", "data/meshes/square_evs.obj", "--cc-boundary", "natural",
                                           "--dirichlet-method", "nitsche", "--quadrature", "tiles:4:8"], range(1, 6)),
     ("cc clamped, square_evs (Nitsche)", ["--basis", "cc", "--mesh", "data/meshes/square_evs.obj", "--cc-boundary", "clamped",
-                                          "--dirichlet-method", "nitsche", "--quadrature", "tiles:4:8"], range(1, 6)),
+                                          "--dirichlet-method", "nitsche", "--grade-evs", "0", "--quadrature", "tiles:4:8"],
+     range(1, 6)),
     ("cc clamped + EV enrichment, square_evs (Nitsche)",
      ["--basis", "cc", "--mesh", "data/meshes/square_evs.obj", "--cc-boundary", "clamped", "--cc-enrich", "quadratic",
       "--dirichlet-method", "nitsche", "--quadrature", "tiles:4:8"], range(1, 6)),
