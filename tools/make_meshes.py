@@ -132,6 +132,17 @@ def torus_with_evs(m=12, n=6, big=2.0, small=0.7):
     flip(faces, 8 + m * 3, 8 + m * 4, 1)
     return verts, faces
 
+def fan(n, radius=0.5, centre=(0.5, 0.5)):
+    """The regular n-gon of circumradius `radius` about `centre`: n quads around one interior vertex of valence n
+    (centre, edge midpoint k, corner k + 1, edge midpoint k + 1); the corners have one face, the midpoints two."""
+    corners = [(centre[0] + radius * math.cos(2 * math.pi * k / n), centre[1] + radius * math.sin(2 * math.pi * k / n), 0.0)
+               for k in range(n)]
+    mids = [((corners[k][0] + corners[(k + 1) % n][0]) / 2, (corners[k][1] + corners[(k + 1) % n][1]) / 2, 0.0)
+            for k in range(n)]
+    verts = [(centre[0], centre[1], 0.0)] + corners + mids
+    faces = [[0, 1 + n + k, 1 + (k + 1) % n, 1 + n + (k + 1) % n] for k in range(n)]
+    return verts, faces
+
 def triangulated_grid(nx, ny, x0, x1, y0, y1, skip=lambda i, j: False, flipped=lambda i, j: False):
     """Each quad of grid() split into two counter-clockwise triangles along the diagonal (i,j)-(i+1,j+1), or
     along (i+1,j)-(i,j+1) where flipped(i, j)."""
@@ -215,6 +226,8 @@ def main():
         "l_shape.obj": (l_shape(), "L-shaped domain [0,2]^2 minus [1,2]^2 (area 3); the reflex corner is a boundary EV"),
         "cube.obj": (cube(), "closed surface: the cube [-1,1]^3, 2 x 2 quads per side; corners have valence 3"),
         "torus_evs.obj": (torus_with_evs(), "closed torus-like surface (R = 2, r = 0.7) with EVs of valence 3 and 5"),
+        **{"fan_%d.obj" % n: (fan(n), "regular %d-gon (circumradius 0.5 about (0.5, 0.5)): %d quads around one interior "
+                                         "EV of valence %d" % (n, n, n)) for n in (3, 5, 6, 8)},
         "tri_square.obj": (tri_square(), "triangulated unit square, separated interior vertices of valence 5 (2) and 7 (2)"),
         "tri_l_shape.obj": (tri_l_shape(), "triangulated L-shape [0,2]^2 minus [1,2]^2, separated interior vertices of valence 5 (4) and 7 (4)"),
         "tri_sphere.obj": (tri_sphere(), "unit sphere: icosahedron split twice, 12 separated vertices of valence 5, the rest 6"),
