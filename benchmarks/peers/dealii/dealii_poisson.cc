@@ -22,6 +22,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -30,11 +31,13 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 using namespace dealii;
 
@@ -105,6 +108,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// "fan-N" (N = 3..12): the N of the regular N-gon; 0 otherwise.
+int fan_valence(const std::string& problem) {
+  if (problem.rfind("fan-", 0) != 0) return 0;
+  const int n = std::atoi(problem.c_str() + 4);
+  return n >= 3 && n <= 12 && problem == "fan-" + std::to_string(n) ? n : 0;
+}
+
 // The number of cells of the coarse mesh (reported as coarse_cells).
 unsigned int coarse_cells = 0;
 
@@ -119,8 +129,23 @@ void make_grid(const std::string& problem, int refine, Triangulation<2>& tria) {
     tria.set_manifold(0, SphericalManifold<2>(Point<2>()));
   } else if (problem == "l-shape") {
     GridGenerator::hyper_L(tria, 0.0, 2.0);
+  } else if (const int n = fan_valence(problem); n > 0) {
+    // data/meshes/fan_N.obj as a mesh (tools/make_meshes.py): the regular N-gon of circumradius 0.5 about (0.5, 0.5),
+    // N quads (centre, edge midpoint k, corner k + 1, edge midpoint k + 1) around the centre.
+    std::vector<Point<2>> vertices{Point<2>(0.5, 0.5)};
+    for (int k = 0; k < n; ++k) {
+      vertices.emplace_back(0.5 + 0.5 * std::cos(2 * kPi * k / n), 0.5 + 0.5 * std::sin(2 * kPi * k / n));
+    }
+    for (int k = 0; k < n; ++k) vertices.push_back(0.5 * (vertices[1 + k] + vertices[1 + (k + 1) % n]));
+    std::vector<CellData<2>> cells(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) {
+      // deal.II's vertex order is lexicographic: (a, b, d, c) for the counter-clockwise quad (a, b, c, d).
+      const unsigned int a = 0, b = 1 + n + k, c = 1 + (k + 1) % n, d = 1 + n + (k + 1) % n;
+      cells[static_cast<std::size_t>(k)].vertices = {a, b, d, c};
+    }
+    tria.create_triangulation(vertices, cells, SubCellData());
   } else {
-    throw std::runtime_error("unknown --problem '" + problem + "' (square, square-neumann, annulus, l-shape)");
+    throw std::runtime_error("unknown --problem '" + problem + "' (square, square-neumann, annulus, l-shape, fan-N)");
   }
   coarse_cells = tria.n_active_cells();
   tria.refine_global(static_cast<unsigned int>(refine));
@@ -135,7 +160,7 @@ int run(const std::string& problem, int degree, int refine, const std::string& j
   const MappingQ<2> mapping(static_cast<unsigned int>(degree));
   DoFHandler<2> dofs(tria);
   dofs.distribute_dofs(fe);
-  const Exact exact(problem);
+  const Exact exact(fan_valence(problem) > 0 ? "square" : problem);  // fan-N: the square's u on the N-gon
   const double setup_dofs = seconds_since(start);
   // Dirichlet data by interpolation at the support points; square-neumann keeps x = 1 (id 1) natural.
   const auto t_boundary = std::chrono::steady_clock::now();
