@@ -45,8 +45,8 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
       ->check(non_blank());
   app.add_option("--cc-boundary", o.cc_boundary,
                  "cc: natural (the limit boundary rule of OpenSubdiv: u_nn = 0 on the boundary, L2 rate 2.5) or clamped (one "
-                 "ring of ghost control points: open knot vector in the normal direction, full order; in iga-poisson it brings "
-                 "Nitsche's method and --grade-evs by default)")
+                 "ring of ghost control points: open knot vector in the normal direction, full order; it brings "
+                 "--grade-evs by default, and in iga-poisson Nitsche's method)")
       ->check(CLI::IsMember({"natural", "clamped"}))->capture_default_str();
   app.add_option("--cc-enrich", o.cc_enrich,
                  "cc: none or quadratic (three functions per extraordinary vertex, quadratics in the physical coordinates "
