@@ -95,6 +95,15 @@ struct Backend {
   std::function<Refinement(const Geometry&, std::span<const Index> marked, int admissibility, BackendFacts&,
                            bool with_prolongation)>
       refine_marked;
+  /// A priori grading toward the irregular elements (Family::Irregular; --grade-evs): `levels` local refinements,
+  /// step k splitting the elements within rings(k) rings of the irregular ones (ring 1: sharing a function with
+  /// one; ring j + 1: with one of ring j), admissibility class `admissibility`, planned on the cells and built
+  /// once; the map is unchanged. With keep_steps each step's prolongation in Refinement::steps (their product is
+  /// `prolongation`), without it the prolongation is left empty. Facts "graded_levels" (steps taken), "marked",
+  /// "added", "levels". Empty when the backend has no local refinement.
+  std::function<Refinement(const Geometry&, int levels, const std::function<int(int step)>& rings, int admissibility,
+                           BackendFacts&, bool keep_steps)>
+      refine_graded;
   /// The default quadrature specification for a degree (quadrature::make_rule_provider).
   std::function<std::string(int degree)> default_quadrature;
   /// Whether a program that can impose Dirichlet data weakly (iga-poisson's Nitsche method) should, unless told
@@ -103,7 +112,7 @@ struct Backend {
   std::function<bool(const BackendOptions&)> prefers_weak_dirichlet;
   /// The local refinements toward the irregular elements (Family::Irregular; --grade-evs) programs apply after
   /// `refine` uniform steps when none are asked for and the mesh has such elements; empty: none. Only with
-  /// refine_marked.
+  /// refine_graded.
   std::function<int(const BackendOptions&, int refine)> default_grading;
   /// Bézier patches of the geometry (elements that are not polynomial are counted in facts "bv_skipped").
   std::function<std::vector<BezierPatch>(const Geometry&, const BackendOptions&, BackendFacts&)> bezier_patches;

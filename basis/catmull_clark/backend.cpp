@@ -62,19 +62,32 @@ std::shared_ptr<const HierarchicalSpace> hierarchical_of(const Geometry& g, Eige
   return h;
 }
 
-// Hierarchical (truncated) refinement of the marked elements (thesis §4.2.5): a Catmull–Clark space becomes
-// level 0 first; the control points are prolongated.
-Refinement refine_hierarchical(const Geometry& geometry, std::span<const Index> marked, int admissibility,
-                               BackendFacts& facts, bool with_prolongation) {
+void refuse_enriched(const Geometry& geometry) {
   if (dynamic_cast<const EnrichedSpace*>(&geometry.space())) {
     // InputError, not UnsupportedError (which the adaptive loop reads as "no deeper level"): the option pair is
     // refused before anything is refined.
     throw InputError("--cc-enrich quadratic with local refinement (--adaptive, --grade-evs): the enriched space has no "
                      "hierarchical form; use uniform refinement (--refine)");
   }
+}
+
+// Hierarchical (truncated) refinement of the marked elements (thesis §4.2.5): a Catmull–Clark space becomes
+// level 0 first; the control points are prolongated.
+Refinement refine_hierarchical(const Geometry& geometry, std::span<const Index> marked, int admissibility,
+                               BackendFacts& facts, bool with_prolongation) {
+  refuse_enriched(geometry);
   Eigen::SparseMatrix<double> to_h;
   const auto coarse = hierarchical_of(geometry, &to_h);
   return hierarchical::refine_marked_geometry(geometry, coarse, to_h, marked, admissibility, facts, with_prolongation);
+}
+
+// Grading toward the extraordinary vertices (the irregular elements), planned on the cells and built once.
+Refinement refine_graded(const Geometry& geometry, int levels, const std::function<int(int)>& rings, int admissibility,
+                         BackendFacts& facts, bool keep_steps) {
+  refuse_enriched(geometry);
+  Eigen::SparseMatrix<double> to_h;
+  const auto coarse = hierarchical_of(geometry, &to_h);
+  return hierarchical::refine_graded_geometry(geometry, coarse, to_h, levels, rings, admissibility, facts, keep_steps);
 }
 
 // `steps` subdivisions of the control net (OpenSubdiv topology); every refined net has quads only, each
@@ -136,6 +149,7 @@ Backend catmull_clark_backend() {
   b.from_net = from_net;
   b.refine = refine_net;
   b.refine_marked = refine_hierarchical;
+  b.refine_graded = refine_graded;
   b.default_quadrature = [](int) { return std::string("gauss:4"); };
   // With the clamped rule, what reaches an accuracy fastest on square_evs.obj (valences 3, 5, 6; README,
   // --grade-evs): Nitsche's method, graded toward the extraordinary vertices. The rule itself stays the user's

@@ -1,6 +1,7 @@
 #pragma once
 // Local refinement of a geometry on a hierarchical space, for the backends' registry entries
 // (Backend::refine_marked): the same steps for every LevelHierarchy.
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -19,6 +20,17 @@ Eigen::SparseMatrix<double> level0_permutation(const HierarchicalSpace& coarse, 
 Refinement refine_marked_geometry(const Geometry& geometry, const std::shared_ptr<const HierarchicalSpace>& coarse,
                                   const Eigen::SparseMatrix<double>& to_coarse, std::span<const Index> marked,
                                   int admissibility, BackendFacts& facts, bool with_prolongation);
+
+/// A priori grading toward the irregular elements of `coarse` (graded_cells: `levels` steps, rings(k) rings at
+/// step k, admissibility class `admissibility`), the control points prolongated as in refine_marked_geometry.
+/// Without keep_steps one space is built, the final one, and the prolongation is left empty; with keep_steps
+/// every step's space is built and its prolongation kept in Refinement::steps (their product: `prolongation`,
+/// from the dofs of `geometry`). Facts "graded_levels" (steps taken: fewer when there is no irregular element),
+/// "marked", "added", "levels".
+Refinement refine_graded_geometry(const Geometry& geometry, const std::shared_ptr<const HierarchicalSpace>& coarse,
+                                  const Eigen::SparseMatrix<double>& to_coarse, int levels,
+                                  const std::function<int(int)>& rings, int admissibility, BackendFacts& facts,
+                                  bool keep_steps);
 
 /// `steps` uniform refinements (every element split) of a geometry on a hierarchical space, with the composed
 /// prolongation.

@@ -1,3 +1,4 @@
 iga_add_test(test_thb basis/test_thb.cpp)
 iga_add_test(test_second_derivatives fem/test_second_derivatives.cpp)
 iga_add_test(test_hierarchical_incremental basis/test_hierarchical_incremental.cpp)
+iga_add_test(test_hierarchical_graded basis/test_hierarchical_graded.cpp)
