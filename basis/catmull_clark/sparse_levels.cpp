@@ -141,17 +141,16 @@ std::unique_ptr<SparseCatmullClarkLevels::Cell> SparseCatmullClarkLevels::make_c
         if (std::find(faces.begin(), faces.end(), g) == faces.end()) faces.push_back(g);
       }
     }
-    std::vector<int> local(static_cast<std::size_t>(net.num_vertices()), -1);
+    // Local vertex numbers by search among the few found so far (a net-sized table would cost every root cell the
+    // whole net).
     for (Index g : faces) {
       std::array<int, 4> q{};
       const auto fv = net.face(g);
       for (int j = 0; j < 4; ++j) {
-        int& id = local[static_cast<std::size_t>(fv[static_cast<std::size_t>(j)])];
-        if (id < 0) {
-          id = static_cast<int>(c->mesh.vertex.size());
-          c->mesh.vertex.push_back(fv[static_cast<std::size_t>(j)]);
-        }
-        q[static_cast<std::size_t>(j)] = id;
+        const Key v = fv[static_cast<std::size_t>(j)];
+        const auto at = std::find(c->mesh.vertex.begin(), c->mesh.vertex.end(), v);
+        q[static_cast<std::size_t>(j)] = static_cast<int>(at - c->mesh.vertex.begin());
+        if (at == c->mesh.vertex.end()) c->mesh.vertex.push_back(v);
       }
       c->mesh.corner.push_back(q);
       c->mesh.face.push_back(g);
