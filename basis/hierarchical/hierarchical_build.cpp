@@ -94,8 +94,9 @@ void HierarchicalSpace::build_from(const HierarchicalSpace& previous, std::span<
   elements_.reserve(previous.elements_.size() + more);
   copied_from_.reserve(elements_.capacity());
   dofs_.reserve(previous.dofs_.size() + more * static_cast<std::size_t>(previous.max_local_));
-  coeffs_.reserve(previous.coeffs_.size());
+  block_map_.assign(previous.blocks_.size(), -1);
   traverse(&previous, &dirty, &on_path);
+  block_map_ = std::vector<int>();
   previous_serial_ = previous.serial_;
 }
 
@@ -130,10 +131,13 @@ void HierarchicalSpace::copy_subtree(const HierarchicalSpace& previous, int leve
     const auto list = previous.dofs(e);
     const Index begin = static_cast<Index>(dofs_.size());
     dofs_.insert(dofs_.end(), list.begin(), list.end());  // previous ids are this build's provisional ids
-    if (el.coeff_begin >= 0) {
-      const auto from = previous.coeffs_.begin() + el.coeff_begin;
-      el.coeff_begin = static_cast<Index>(coeffs_.size());
-      coeffs_.insert(coeffs_.end(), from, from + static_cast<Index>(list.size()) * el.num_local);
+    if (el.coeff != nullptr) {
+      int& mapped = block_map_[static_cast<std::size_t>(el.block)];
+      if (mapped < 0) {
+        mapped = static_cast<int>(blocks_.size());
+        blocks_.push_back(previous.blocks_[static_cast<std::size_t>(el.block)]);
+      }
+      el.block = mapped;
     }
     el.dof_begin = begin;
     el.dof_end = static_cast<Index>(dofs_.size());
@@ -226,7 +230,79 @@ void HierarchicalSpace::traverse(const HierarchicalSpace* previous, const CellSe
     }
   };
   for (Index c = 0; c < h.num_root_cells(); ++c) visit(visit, 0, Key{c}, false, {}, Eigen::MatrixXd());
+  release_blocks();
   finish(level_of, function_of);
+}
+
+std::size_t HierarchicalSpace::coefficients_used() const {
+  std::size_t n = 0;
+  for (const Element& el : elements_) {
+    if (el.coeff != nullptr) n += static_cast<std::size_t>(el.dof_end - el.dof_begin) * static_cast<std::size_t>(el.num_local);
+  }
+  return n;
+}
+
+std::size_t HierarchicalSpace::coefficients_held() const {
+  std::size_t n = 0;
+  for (const auto& b : blocks_) n += b->used;
+  return n;
+}
+
+double* HierarchicalSpace::allocate_coefficients(std::size_t n, int& block) {
+  if (filling_ == nullptr || filling_->capacity - filling_->used < n) {
+    // Blocks grow geometrically from 4096 to 2^17 coefficients (1 MiB); pages are touched only when written.
+    constexpr std::size_t smallest = std::size_t{1} << 12, largest = std::size_t{1} << 17;
+    const std::size_t last = filling_ == nullptr ? 0 : filling_->capacity;
+    auto b = std::make_shared<CoefficientBlock>();
+    b->capacity = std::max(n, std::clamp(2 * last, smallest, largest));
+    b->data = std::make_unique_for_overwrite<double[]>(b->capacity);
+    filling_ = b.get();
+    filling_block_ = static_cast<int>(blocks_.size());
+    blocks_.push_back(std::move(b));
+  }
+  block = filling_block_;
+  double* out = filling_->data.get() + filling_->used;
+  filling_->used += n;
+  return out;
+}
+
+void HierarchicalSpace::release_blocks() {
+  const std::size_t shared = blocks_.size();
+  std::vector<std::size_t> live(shared, 0);
+  auto size_of = [](const Element& el) {
+    return static_cast<std::size_t>(el.dof_end - el.dof_begin) * static_cast<std::size_t>(el.num_local);
+  };
+  for (const Element& el : elements_) {
+    if (el.coeff != nullptr) live[static_cast<std::size_t>(el.block)] += size_of(el);
+  }
+  std::vector<char> sparse(shared, 0);
+  for (std::size_t b = 0; b < shared; ++b) {
+    sparse[b] = blocks_[b].get() != filling_ && 2 * live[b] < blocks_[b]->used;  // own blocks are full of live leaves
+  }
+  for (Element& el : elements_) {
+    if (el.coeff == nullptr || static_cast<std::size_t>(el.block) >= shared || !sparse[static_cast<std::size_t>(el.block)]) continue;
+    const std::size_t n = size_of(el);
+    double* to = allocate_coefficients(n, el.block);
+    std::copy(el.coeff, el.coeff + n, to);
+    el.coeff = to;
+  }
+  // Only the blocks some leaf points into stay.
+  std::vector<int> kept(blocks_.size(), -1);
+  for (const Element& el : elements_) {
+    if (el.coeff != nullptr) kept[static_cast<std::size_t>(el.block)] = 1;
+  }
+  std::vector<std::shared_ptr<const CoefficientBlock>> blocks;
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    if (kept[b] < 0) continue;
+    kept[b] = static_cast<int>(blocks.size());
+    blocks.push_back(std::move(blocks_[b]));
+  }
+  blocks_ = std::move(blocks);
+  for (Element& el : elements_) {
+    if (el.coeff != nullptr) el.block = kept[static_cast<std::size_t>(el.block)];
+  }
+  filling_ = nullptr;
+  filling_block_ = -1;
 }
 
 void HierarchicalSpace::add_leaf(int level, Key cell, const std::vector<Index>& rows, const Eigen::MatrixXd& m,
@@ -239,8 +315,9 @@ void HierarchicalSpace::add_leaf(int level, Key cell, const std::vector<Index>& 
   dofs_.insert(dofs_.end(), rows.begin(), rows.end());
   el.dof_end = static_cast<Index>(dofs_.size());
   if (!identity) {
-    el.coeff_begin = static_cast<Index>(coeffs_.size());
-    coeffs_.insert(coeffs_.end(), m.data(), m.data() + m.size());
+    double* to = allocate_coefficients(static_cast<std::size_t>(m.size()), el.block);
+    std::copy(m.data(), m.data() + m.size(), to);
+    el.coeff = to;
   }
   elements_.push_back(el);
 }
@@ -283,8 +360,8 @@ void HierarchicalSpace::finish(const std::vector<int>& level_of, const std::vect
       // The first leaf of the dof's level where it is a row: there its row is a unit row (its local function).
       dof_home_[d] = e;
       Index j = r;
-      if (el.coeff_begin >= 0) {
-        const Eigen::Map<const Eigen::MatrixXd> c(coeffs_.data() + el.coeff_begin, n, el.num_local);
+      if (el.coeff != nullptr) {
+        const Eigen::Map<const Eigen::MatrixXd> c(el.coeff, n, el.num_local);
         c.row(r).cwiseAbs().maxCoeff(&j);
       }
       dof_home_local_[d] = static_cast<int>(j);
@@ -296,8 +373,8 @@ void HierarchicalSpace::finish(const std::vector<int>& level_of, const std::vect
 }
 
 Eigen::MatrixXd HierarchicalSpace::element_coefficients(const Element& el) const {
-  if (el.coeff_begin < 0) return Eigen::MatrixXd::Identity(el.num_local, el.num_local);
-  return Eigen::Map<const Eigen::MatrixXd>(coeffs_.data() + el.coeff_begin, el.dof_end - el.dof_begin, el.num_local);
+  if (el.coeff == nullptr) return Eigen::MatrixXd::Identity(el.num_local, el.num_local);
+  return Eigen::Map<const Eigen::MatrixXd>(el.coeff, el.dof_end - el.dof_begin, el.num_local);
 }
 
 Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from_previous(const HierarchicalSpace& previous) const {

@@ -84,13 +84,13 @@ std::span<const Index> HierarchicalSpace::dofs(Index e) const {
 
 void HierarchicalSpace::evaluate(Index e, const Eigen::Matrix2Xd& pts, int derivatives, BasisValues& out) const {
   const Element& el = elements_[static_cast<std::size_t>(e)];
-  if (el.coeff_begin < 0) {
+  if (el.coeff == nullptr) {
     hierarchy_->evaluate(el.level, el.cell, pts, derivatives, out);
     return;
   }
   thread_local BasisValues local;
   hierarchy_->evaluate(el.level, el.cell, pts, derivatives, local);
-  const Eigen::Map<const Eigen::MatrixXd> c(coeffs_.data() + el.coeff_begin, el.dof_end - el.dof_begin, el.num_local);
+  const Eigen::Map<const Eigen::MatrixXd> c(el.coeff, el.dof_end - el.dof_begin, el.num_local);
   out.resize(c.rows(), pts.cols(), derivatives);
   BasisValues::for_each_block(local, out, derivatives,
                               [&](const Eigen::MatrixXd& from, Eigen::MatrixXd& to) { to.noalias() = c * from; });
@@ -238,12 +238,7 @@ Eigen::SparseMatrix<double> HierarchicalSpace::prolongation_from(const Hierarchi
       if (ce >= 0) {
         const Element& cel = coarse.elements_[static_cast<std::size_t>(ce)];
         rows = coarse.dofs(ce);
-        if (cel.coeff_begin < 0) {
-          here = Eigen::MatrixXd::Identity(cel.num_local, cel.num_local);
-        } else {
-          here = Eigen::Map<const Eigen::MatrixXd>(coarse.coeffs_.data() + cel.coeff_begin,
-                                                   cel.dof_end - cel.dof_begin, cel.num_local);
-        }
+        here = coarse.element_coefficients(cel);
         cur = &here;
       }
     }
@@ -289,11 +284,10 @@ Eigen::MatrixXd HierarchicalSpace::coefficients_from(const HierarchicalSpace& co
     const auto rows = coarse.dofs(ce);
     Eigen::MatrixXd local(static_cast<Index>(rows.size()), c.cols());
     for (std::size_t r = 0; r < rows.size(); ++r) local.row(static_cast<Index>(r)) = c.row(rows[r]);
-    if (cel.coeff_begin < 0) {
+    if (cel.coeff == nullptr) {
       v = local;
     } else {
-      v = Eigen::Map<const Eigen::MatrixXd>(coarse.coeffs_.data() + cel.coeff_begin, cel.dof_end - cel.dof_begin,
-                                            cel.num_local).transpose() * local;
+      v = Eigen::Map<const Eigen::MatrixXd>(cel.coeff, cel.dof_end - cel.dof_begin, cel.num_local).transpose() * local;
     }
     return true;
   });

@@ -93,6 +93,10 @@ class HierarchicalSpace final : public Space {
   Eigen::SparseMatrix<double> prolongation_from(const HierarchicalSpace& coarse) const;
   /// prolongation_from(coarse) × c without forming the matrix (num_dofs × c.cols()): for control points.
   Eigen::MatrixXd coefficients_from(const HierarchicalSpace& coarse, const Eigen::MatrixXd& c) const;
+  /// Truncation coefficients the leaves use, and those the space holds in its blocks (shared with the spaces it was
+  /// built from or that were built from it): held <= 2 × used (release_blocks).
+  std::size_t coefficients_used() const;
+  std::size_t coefficients_held() const;
   /// Whether this space was built from `previous` by the incremental constructor (prolongation_from(previous)
   /// then costs what the change costs).
   bool built_from(const HierarchicalSpace& previous) const {
@@ -104,8 +108,16 @@ class HierarchicalSpace final : public Space {
     int level = 0;
     Key cell = 0;
     Index dof_begin = 0, dof_end = 0;  // into dofs_
-    Index coeff_begin = -1;            // into coeffs_: (dofs × local functions) column-major; -1: identity
+    const double* coeff = nullptr;     // (dofs × local functions) column-major, in blocks_[block]; null: identity
+    int block = -1;
     int num_local = 0;                 // level-local functions on the cell
+  };
+  // The leaves' coefficients are written once into blocks that never move: a space built from another shares the
+  // blocks its copied leaves point into instead of copying them; a shared block less than half of which is still
+  // in use is compacted away (release_blocks), so the blocks hold at most about twice the space's coefficients.
+  struct CoefficientBlock {
+    std::unique_ptr<double[]> data;
+    std::size_t capacity = 0, used = 0;
   };
   using CellSets = std::vector<std::unordered_set<Key, KeyHash>>;
   /// Drops empty deepest levels of refined_; UnsupportedError when it is deeper than the hierarchy can index.
@@ -118,8 +130,14 @@ class HierarchicalSpace final : public Space {
   /// Appends a leaf: its dofs (`rows`, provisional ids) and their coefficients in the level's local functions
   /// (`m`, not stored when the identity).
   void add_leaf(int level, Key cell, const std::vector<Index>& rows, const Eigen::MatrixXd& m, bool identity);
-  /// Appends the previous space's leaves under cell `cell` of level `level` (a subtree both spaces share).
+  /// Appends the previous space's leaves under cell `cell` of level `level` (a subtree both spaces share; their
+  /// coefficient blocks are shared, block_map_ says where each previous block sits in blocks_).
   void copy_subtree(const HierarchicalSpace& previous, int level, Key cell);
+  /// Room for n coefficients in the block being filled (a new one when it is full); `block` gets its index.
+  double* allocate_coefficients(std::size_t n, int& block);
+  /// After a build: the leaves of shared blocks less than half in use get their coefficients copied into this
+  /// space's own blocks; blocks no leaf uses are let go.
+  void release_blocks();
   /// The dof of function `function` of level `level`, or -1 when it is not active (`cells`: scratch).
   Index dof_of(int level, Key function, std::vector<Key>& cells) const;
   /// After a build: dofs renumbered by first appearance in the elements' lists (dof_level_/dof_function_ are
@@ -138,7 +156,10 @@ class HierarchicalSpace final : public Space {
   RefinedCells refined_;
   std::vector<Element> elements_;
   std::vector<Index> dofs_;
-  std::vector<double> coeffs_;
+  std::vector<std::shared_ptr<const CoefficientBlock>> blocks_;
+  CoefficientBlock* filling_ = nullptr;  // during a build: this space's block being filled, blocks_[filling_block_]
+  int filling_block_ = -1;
+  std::vector<int> block_map_;           // during a build from a previous space: its block b is blocks_[block_map_[b]]
   std::vector<int> dof_level_;
   std::vector<Key> dof_function_;
   std::vector<Index> dof_home_;   // element

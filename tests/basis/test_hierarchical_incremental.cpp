@@ -5,7 +5,8 @@
 // the rows of recomputed leaves; the whole build's is the general traversal). THB splines of degrees 2 and 3 on
 // non-uniform knots, and hierarchical Catmull–Clark on square_evs.obj (extraordinary vertices of valence 3, 5, 6),
 // refined step by step toward a corner and at random, with admissibility classes 0 and 2; and the two properties
-// of LevelHierarchy::support_extension the incremental build rests on.
+// of LevelHierarchy::support_extension the incremental build rests on. Along every chain, the coefficient blocks a
+// space shares with its predecessors hold at most twice the coefficients its leaves use.
 #include "support/paths.hpp"
 #include <gtest/gtest.h>
 
@@ -81,6 +82,8 @@ int check_chain(std::shared_ptr<const HierarchicalSpace> space, int steps, int a
   for (int s = 0; s < steps; ++s) {
     const std::vector<Index> marked = pick(*space);
     const auto next = basis::hierarchical::refine_marked(*space, marked, admissibility).space;
+    // The coefficient blocks shared along the chain hold at most twice what the leaves use.
+    EXPECT_LE(next->coefficients_held(), 2 * next->coefficients_used()) << "step " << s;
     if (next->built_from(*space)) {
       ++incremental;
       const HierarchicalSpace whole(next->hierarchy_ptr(), next->refined());
