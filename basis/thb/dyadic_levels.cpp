@@ -1,6 +1,8 @@
 #include "basis/thb/dyadic_levels.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
 #include <mutex>
 
@@ -13,6 +15,8 @@ namespace iga::basis::thb {
 using hierarchical::Key;
 
 DyadicKnots::DyadicKnots(const bspline::KnotVector& coarse) : p_(coarse.degree()) {
+  static std::atomic<std::uint64_t> instances{0};
+  id_ = ++instances;
   const std::vector<double>& t = coarse.knots();
   for (Index i = p_; i <= coarse.num_basis(); ++i) {
     const double x = t[static_cast<std::size_t>(i)];
@@ -95,6 +99,30 @@ void DyadicKnots::support(int level, Key function, Key& first, Key& last) const 
 }
 
 void DyadicKnots::refinement(int level, Key interval, int half, Eigen::MatrixXd& k) const {
+  // The hierarchical builds ask for both halves of an interval in turn, and for its neighbours: the last 64
+  // relations per thread are kept (direct-mapped by the interval's low bits), ahead of the shared cache (perf of
+  // the adaptive L-shape: a third of the refine step's relation time was that cache's key and lock).
+  struct Recent {
+    std::uint64_t owner = 0;
+    int level = -1, half = 0;
+    Key interval = -1;
+    Eigen::MatrixXd k;
+  };
+  thread_local std::array<Recent, 64> recent;
+  Recent& r = recent[(static_cast<std::size_t>(interval) * 2 + static_cast<std::size_t>(half)) & 63];
+  if (r.owner == id_ && r.level == level && r.interval == interval && r.half == half) {
+    k = r.k;
+    return;
+  }
+  shared_refinement(level, interval, half, k);
+  r.owner = id_;
+  r.level = level;
+  r.interval = interval;
+  r.half = half;
+  r.k = k;
+}
+
+void DyadicKnots::shared_refinement(int level, Key interval, int half, Eigen::MatrixXd& k) const {
   double wc[32], wf[32];
   window(level, interval, wc);
   window(level + 1, 2 * interval + half, wf);

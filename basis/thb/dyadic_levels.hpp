@@ -5,6 +5,7 @@
 // spans and windows are computed from the coarse breakpoints, so level 20 of a 16-interval patch costs nothing
 // until a cell of it is used.
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -41,11 +42,15 @@ class DyadicKnots {
   int max_level() const;
 
  private:
+  /// refinement() through the cache shared by all threads.
+  void shared_refinement(int level, hierarchical::Key interval, int half, Eigen::MatrixXd& k) const;
+
   int p_ = 0;
   Index k_ = 0;                 // coarse intervals
   std::vector<double> b_;       // coarse breakpoints
   std::vector<int> mult_;       // their multiplicities (ends p + 1)
   std::vector<Index> extra_;    // extra_[c] = Σ_{c' = 1..min(c, K-1)} (mult_c' - 1), c = 0..K-1
+  std::uint64_t id_ = 0;            // distinct per object, for the per-thread cache of recent relations
   mutable std::mutex cache_mutex_;  // two-scale relations by normalised knot windows
   mutable std::map<std::vector<long long>, Eigen::MatrixXd> cache_;
 };
