@@ -118,11 +118,12 @@ void append_step(basis::Refinement& refined, basis::Refinement next, bool keep_s
 }
 
 // --grade-evs N: N local refinements around the extraordinary vertices (the irregular elements), each with the
-// neighbours admissibility class 2 adds (steps as append_step keeps them); step k (from 0) refines the elements
-// within max(1, round(3 / 2^k)) rings (3, 2, 1, 1, ...; ring 1 shares a function with an irregular element). The
-// rings matter: refining one ring leaves the next at the coarse level, where the space lacks the quadratics near
-// valences >= 5, and the error stops falling there (square_evs.obj, --refine 2, 5 levels: 1.8e-7 with one ring
-// throughout, 1.9e-8 with 3, 2, 1, ...; 7.8e-8 with 2 at every step, at 1.6 times the dofs; README, --grade-evs).
+// neighbours admissibility class 2 adds (with keep_steps, each step's prolongation joins the steps); step k (from
+// 0) refines the elements within max(1, round(3 / 2^k)) rings (3, 2, 1, 1, ...; ring 1 shares a function with an
+// irregular element). The rings matter: refining one ring leaves the next at the coarse level, where the space
+// lacks the quadratics near valences >= 5, and the error stops falling there (square_evs.obj, --refine 2, 5 levels:
+// 1.8e-7 with one ring throughout, 1.9e-8 with 3, 2, 1, ...; 7.8e-8 with 2 at every step, at 1.6 times the dofs;
+// README, --grade-evs).
 // The backend plans the steps on the cells and builds the final space once (Backend::refine_graded).
 // Without --grade-evs the backend's default_grading (cc: --refine + 3 with the clamped rule), and a mesh without
 // extraordinary vertices is simply not graded.
