@@ -8,49 +8,12 @@
 #include "fem/dirichlet.hpp"
 #include "fem/linear_system.hpp"
 #include "fem/nitsche.hpp"
+#include "fem/smoothness.hpp"
 #include "pde/biharmonic/forms.hpp"
 
 namespace iga::pde {
 
 namespace {
-
-std::string where(const basis::Geometry& geometry, Index e, int side) {
-  Eigen::Matrix2Xd mid(2, 1);
-  mid.col(0) = basis::side_point(geometry.space().kind(e).shape, side, 0.5);
-  basis::GeometryValues gv;
-  geometry.evaluate(e, mid, gv);
-  std::ostringstream s;
-  s << "(" << gv.x(0, 0) << ", " << gv.x(1, 0) << ")";
-  return s.str();
-}
-
-// H² needs C1 functions: every element of degree >= 2 and no interior edge with C0 continuity. A backend that
-// lists no interior edges (polyhedral splines, C1 by construction) cannot be checked edge by edge: reported.
-std::string check_smoothness(const basis::Geometry& geometry) {
-  const basis::Space& space = geometry.space();
-  for (Index e = 0; e < space.num_elements(); ++e) {
-    const std::optional<int> degree = space.polynomial_degree(e);
-    if (degree && *degree < 2) {
-      throw InputError("biharmonic: element " + std::to_string(e) + " has degree " + std::to_string(*degree) +
-                       ": its functions are not in H² (Δ²u = f needs a C1 space of degree >= 2)");
-    }
-  }
-  std::vector<basis::InteriorEdge> edges;
-  try {
-    edges = space.interior_edges();
-  } catch (const UnsupportedError&) {
-    return "not checked edge by edge (the " + space.name() + " space lists no interior edges; C1 by construction)";
-  }
-  for (const basis::InteriorEdge& edge : edges) {
-    if (edge.continuity < 1) {
-      throw InputError("biharmonic: the space is only C0 across the side shared by elements " +
-                       std::to_string(edge.element[0] + 1) + " and " + std::to_string(edge.element[1] + 1) +
-                       " (midpoint " + where(geometry, edge.element[0], edge.side[0]) +
-                       "): Δ²u = f needs a C1 space (degree >= 2, no repeated interior knot)");
-    }
-  }
-  return "C1 across all " + std::to_string(edges.size()) + " interior edges";
-}
 
 class Biharmonic final : public fem::Problem {
  public:
@@ -74,7 +37,7 @@ class Biharmonic final : public fem::Problem {
                          std::to_string(names.size()) + " parts)");
       }
     }
-    smoothness_ = check_smoothness(geometry);
+    smoothness_ = fem::check_c1(geometry, "biharmonic", "Δ²u = f");
     clamped_.clear();
     supported_.clear();
     all_ = geometry.space().boundary_edges();
