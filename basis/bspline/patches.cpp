@@ -61,6 +61,38 @@ Geometry make_quarter_annulus(int degree, double r_inner, double r_outer) {
   return make_rational_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp, weights);
 }
 
+Geometry make_cylinder_patch(int degree, double radius, double length, double theta0, double theta1) {
+  if (degree < 2) {
+    throw InputError("cylinder patch: the arc is quadratic, degree " + std::to_string(degree) +
+                     " cannot represent it; use degree >= 2");
+  }
+  const double span = theta1 - theta0;
+  if (!(radius > 0.0 && length > 0.0) || !std::isfinite(radius) || !std::isfinite(length)) {
+    throw InputError("cylinder patch: need a radius and a length > 0");
+  }
+  if (!(span > 0.0 && span < std::numbers::pi)) throw InputError("cylinder patch: need 0 < theta1 - theta0 < pi");
+  // The arc in the (x, z) plane as a rational quadratic Bézier curve in homogeneous coordinates (w x, w z, w).
+  const double half = 0.5 * span, mid = theta0 + half, w = std::cos(half), far = radius / w;
+  Eigen::MatrixXd arc(3, 3);
+  arc << radius * std::sin(theta0), radius * std::cos(theta0), 1.0,  //
+      w * far * std::sin(mid), w * far * std::cos(mid), w,              //
+      radius * std::sin(theta1), radius * std::cos(theta1), 1.0;
+  const Eigen::MatrixXd arc_p = elevate_to(arc, degree);
+  Eigen::MatrixXd axis(2, 1);
+  axis << 0.0, length;
+  const Eigen::MatrixXd axis_p = elevate_to(axis, degree);
+  const int n = degree + 1;
+  Eigen::MatrixXd cp(n * n, 3);
+  Eigen::VectorXd weights(n * n);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      cp.row(i + n * j) << arc_p(i, 0) / arc_p(i, 2), axis_p(j, 0), arc_p(i, 1) / arc_p(i, 2);
+      weights(i + n * j) = arc_p(i, 2);
+    }
+  }
+  return make_rational_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp, weights);
+}
+
 Geometry make_plate_with_hole(int degree, double radius, double side) {
   if (degree < 2) {
     throw InputError("plate with a hole: the hole is quadratic, degree " + std::to_string(degree) +

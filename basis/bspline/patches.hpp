@@ -27,6 +27,13 @@ Geometry make_quarter_annulus(int degree, double r_inner = 1.0, double r_outer =
 /// space there and the hole exactly circular. InputError for p < 2 or not 0 < R < L.
 Geometry make_plate_with_hole(int degree, double radius = 1.0, double side = 4.0);
 
+/// A cylindrical shell x = (R sin θ, y, R cos θ), θ0 <= θ <= θ1 (radians, θ1 − θ0 in (0, π)), 0 <= y <= L, exactly,
+/// as one NURBS patch of degree (p, p), p >= 2: u runs along the arc (the rational quadratic arc, weights 1,
+/// cos((θ1 − θ0)/2), 1, raised to degree p), v along the axis. Boundary parts: v0 the arc at y = 0, v1 at y = L,
+/// u0 the straight edge at θ0, u1 at θ1. The Scordelis–Lo roof is θ = ±40°, R = 25, L = 50; the pinched cylinder's
+/// octant θ in [0, 90°]. InputError for p < 2, R or L not > 0, or the angle range outside (0, π).
+Geometry make_cylinder_patch(int degree, double radius, double length, double theta0, double theta1);
+
 /// The rectangle [x0,x1]×[y0,y1] (affine map) as a single Bézier patch of degree (p, p), p >= 1.
 Geometry make_rectangle(int degree, double x0 = 0.0, double x1 = 1.0, double y0 = 0.0, double y1 = 1.0);
 

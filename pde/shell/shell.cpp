@@ -1,0 +1,322 @@
+#include "pde/shell/shell.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "basis/locate.hpp"
+#include "core/error.hpp"
+#include "fem/dirichlet.hpp"
+#include "fem/linear_system.hpp"
+#include "fem/smoothness.hpp"
+
+namespace iga::pde {
+
+namespace {
+
+std::string shortest(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+std::string part_list(const std::vector<int>& parts, const std::vector<std::string>& names) {
+  std::string out;
+  for (int p : parts) out += (out.empty() ? "" : ", ") + names[static_cast<std::size_t>(p)];
+  return out;
+}
+
+std::string point_text(const Eigen::Vector3d& x) {
+  std::ostringstream out;
+  out << "(" << x(0) << ", " << x(1) << ", " << x(2) << ")";
+  return out.str();
+}
+
+const char* axis(int c) { return c == 0 ? "x" : c == 1 ? "y" : "z"; }
+
+void check_material(const ShellMaterial& m) {
+  if (!(m.young > 0.0) || !std::isfinite(m.young)) {
+    throw InputError("shell: Young's modulus E must be a finite number > 0, got " + shortest(m.young));
+  }
+  if (!(m.poisson > -1.0 && m.poisson <= 0.5)) {
+    throw InputError("shell: Poisson's ratio must lie in (-1, 0.5], got " + shortest(m.poisson));
+  }
+  if (!(m.thickness > 0.0) || !std::isfinite(m.thickness)) {
+    throw InputError("shell: the thickness t must be a finite number > 0, got " + shortest(m.thickness));
+  }
+}
+
+class Shell final : public fem::Problem {
+ public:
+  explicit Shell(ShellData data) : d_(std::move(data)) {
+    check_material(d_.material);
+    form_ = std::make_unique<KirchhoffLoveForm>(d_.material);
+    const bool area = d_.area_load[0] || d_.area_load[1] || d_.area_load[2];
+    if (area || d_.pressure) load_ = std::make_unique<ShellLoadForm>(d_.area_load, d_.pressure);
+  }
+  std::string name() const override { return "shell"; }
+  int components() const override { return 3; }
+
+  void check(const basis::Geometry& geometry) const override;
+  std::vector<const fem::BilinearForm*> bilinear_forms() const override { return {form_.get()}; }
+  std::vector<const fem::LinearForm*> linear_forms() const override {
+    if (load_) return {load_.get()};
+    return {};
+  }
+  void add_boundary_terms(const fem::Assembler& assembler, fem::LinearSystem& system,
+                          fem::Choices& choices) const override;
+  fem::DirichletConditions constraints(const fem::Assembler& assembler, fem::Choices& choices) const override;
+  std::vector<std::string> error_names() const override { return {}; }
+  Eigen::VectorXd error_squares(const fem::Assembler&, const Eigen::VectorXd&,
+                                const fem::LinearSystem&) const override {
+    return {};
+  }
+
+ private:
+  std::vector<basis::BoundaryEdge> on(const std::vector<int>& parts) const {
+    std::vector<basis::BoundaryEdge> out;
+    for (const basis::BoundaryEdge& e : edges_) {
+      if (std::find(parts.begin(), parts.end(), e.part) != parts.end()) out.push_back(e);
+    }
+    return out;
+  }
+  void refuse_rigid_modes(const basis::Geometry& geometry, const fem::DirichletConditions& bc) const;
+  fem::DirichletConditions point_support(const basis::Space& space, std::size_t k, const fem::DirichletConditions& bc,
+                                         const std::vector<Index>& taken) const;
+
+  ShellData d_;
+  std::unique_ptr<KirchhoffLoveForm> form_;
+  std::unique_ptr<ShellLoadForm> load_;
+  mutable std::vector<std::string> names_;
+  mutable std::string smoothness_;
+  mutable std::vector<basis::BoundaryEdge> edges_;
+  mutable std::vector<basis::LocatedPoint> points_;    ///< of d_.point_loads, by check()
+  mutable std::vector<basis::LocatedPoint> supports_;  ///< of d_.point_supports, by check()
+};
+
+void Shell::check(const basis::Geometry& geometry) const {
+  if (geometry.dim() != 3) {
+    throw UnsupportedError("shell: the geometry is planar (two coordinates); a shell needs a surface in 3D: give "
+                           "three coordinates (z = 0 for a plate)");
+  }
+  smoothness_ = fem::check_c1(geometry, "shell", "the Kirchhoff-Love shell");
+  names_ = geometry.space().boundary_part_names();
+  const int parts = static_cast<int>(names_.size());
+  auto check_parts = [&](const std::vector<int>& list, const std::string& what) {
+    if (list.empty()) throw InputError("shell: " + what + " names no boundary part");
+    for (int p : list) {
+      if (p < 0 || p >= parts) {
+        throw InputError("shell: " + what + ": boundary part " + std::to_string(p) + " does not exist (" +
+                         std::to_string(parts) + " parts)");
+      }
+    }
+  };
+  bool seen[3] = {false, false, false};
+  for (const ShellSupport& s : d_.supports) {
+    if (s.component < 0 || s.component > 2) {
+      throw InputError("shell: support component " + std::to_string(s.component) + " (0 is x, 1 is y, 2 is z)");
+    }
+    const std::string what = std::string("support u_") + axis(s.component);
+    check_parts(s.parts, what);
+    if (seen[s.component]) {
+      throw InputError("shell: " + what + " is given twice: give it one condition over all its parts");
+    }
+    seen[s.component] = true;
+  }
+  for (const ShellLineLoad& l : d_.line_loads) check_parts(l.parts, "line load");
+  points_.clear();
+  for (std::size_t k = 0; k < d_.point_loads.size(); ++k) {
+    points_.push_back(basis::locate_point(geometry, d_.point_loads[k].at, "shell: point load " + std::to_string(k + 1)));
+  }
+  supports_.clear();
+  for (std::size_t k = 0; k < d_.point_supports.size(); ++k) {
+    const ShellPointSupport& s = d_.point_supports[k];
+    if (s.component < 0 || s.component > 2) {
+      throw InputError("shell: point support " + std::to_string(k + 1) + ": component " + std::to_string(s.component) +
+                       " (0 is x, 1 is y, 2 is z)");
+    }
+    supports_.push_back(basis::locate_point(geometry, s.at, "shell: point support " + std::to_string(k + 1)));
+  }
+  edges_ = geometry.space().boundary_edges();
+}
+
+void Shell::add_boundary_terms(const fem::Assembler& assembler, fem::LinearSystem& system,
+                               fem::Choices& choices) const {
+  const ShellMaterial& m = d_.material;
+  choices.emplace_back("material", "linear isotropic, E = " + shortest(m.young) + ", nu = " + shortest(m.poisson) +
+                                       ", t = " + shortest(m.thickness));
+  choices.emplace_back("formulation", "Kirchhoff-Love, membrane + bending (Kiendl et al. 2009)");
+  choices.emplace_back("smoothness", smoothness_);
+  const Eigen::SparseMatrix<double> none;
+  for (const ShellLineLoad& l : d_.line_loads) {
+    const ShellLineLoadForm form(l.load);
+    Eigen::VectorXd b;
+    assembler.assemble_boundary(on(l.parts), nullptr, &form, nullptr, &b);
+    system.add(none, b);
+    choices.emplace_back("line load", part_list(l.parts, names_));
+  }
+  if (d_.point_loads.empty()) return;
+  const basis::Space& space = assembler.geometry().space();
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(assembler.num_dofs());
+  basis::BasisValues bv;
+  Eigen::Matrix2Xd at(2, 1);
+  std::string where;
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    at.col(0) = points_[k].uv;
+    space.evaluate(points_[k].element, at, 0, bv);
+    const auto dofs = space.dofs(points_[k].element);
+    for (std::size_t a = 0; a < dofs.size(); ++a) {
+      for (int c = 0; c < 3; ++c) b(3 * dofs[a] + c) += d_.point_loads[k].force(c) * bv.value(static_cast<Index>(a), 0);
+    }
+    if (!where.empty()) where += "; ";
+    where += point_text(d_.point_loads[k].at) + " element " + std::to_string(points_[k].element);
+  }
+  system.add(none, b);
+  choices.emplace_back("point loads", where);
+}
+
+fem::DirichletConditions Shell::constraints(const fem::Assembler& assembler, fem::Choices& choices) const {
+  const fem::Assembler scalar(assembler.geometry(), assembler.rules());
+  std::vector<fem::DirichletConditions> sets;
+  for (const ShellSupport& s : d_.supports) {
+    const fem::DirichletConditions c =
+        fem::project_dirichlet(scalar, on(s.parts), s.value ? s.value : fem::constant_function(0.0));
+    sets.push_back(fem::component_conditions(c, s.component, 3));
+    choices.emplace_back(std::string("support u_") + axis(s.component),
+                         part_list(s.parts, names_) + ": strong (L2 projection)");
+  }
+  fem::DirichletConditions bc = fem::merge_conditions(sets, assembler.num_dofs());
+  if (!d_.point_supports.empty()) {
+    std::vector<fem::DirichletConditions> with{bc};
+    std::vector<Index> taken;  // the dofs earlier point supports couple
+    for (std::size_t k = 0; k < d_.point_supports.size(); ++k) {
+      with.push_back(point_support(assembler.geometry().space(), k, bc, taken));
+      const fem::DirichletConditions& p = with.back();
+      taken.insert(taken.end(), p.dofs.begin(), p.dofs.end());
+      if (p.coupling.rows() > 0) {
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(p.coupling, 0); it; ++it) {
+          taken.push_back(it.col());
+        }
+      }
+      std::string what = point_text(d_.point_supports[k].at);
+      if (p.dofs.empty()) what += ": implied by the supports";
+      choices.emplace_back(std::string("point support u_") + axis(d_.point_supports[k].component), what);
+    }
+    bc = fem::merge_conditions(with, assembler.num_dofs());
+  }
+  refuse_rigid_modes(assembler.geometry(), bc);
+  return bc;
+}
+
+// Σ_a φ_a(x) u_{a,c} = 0 as u_s = −Σ_{a≠s} (φ_a/φ_s) u_a − Σ_{a supported} (φ_a/φ_s) g_a, s the free dof of the
+// largest φ_a(x); dofs the part supports already hold enter with their values. Empty when every dof is held.
+fem::DirichletConditions Shell::point_support(const basis::Space& space, std::size_t k,
+                                              const fem::DirichletConditions& bc,
+                                              const std::vector<Index>& taken) const {
+  const int c = d_.point_supports[k].component;
+  Eigen::Matrix2Xd at(2, 1);
+  at.col(0) = supports_[k].uv;
+  basis::BasisValues bv;
+  space.evaluate(supports_[k].element, at, 0, bv);
+  const auto dofs = space.dofs(supports_[k].element);
+  double rhs = 0.0;
+  std::vector<std::pair<Index, double>> free;
+  for (std::size_t a = 0; a < dofs.size(); ++a) {
+    const double phi = bv.value(static_cast<Index>(a), 0);
+    if (phi == 0.0) continue;
+    const Index dof = 3 * dofs[a] + c;
+    const auto held = std::lower_bound(bc.dofs.begin(), bc.dofs.end(), dof);
+    if (held != bc.dofs.end() && *held == dof) {
+      const Index row = held - bc.dofs.begin();
+      if (bc.coupling.nonZeros() > 0 && bc.coupling.row(row).nonZeros() > 0) {
+        throw UnsupportedError("shell: point support " + std::to_string(k + 1) +
+                               " lies on functions of a coupled boundary condition; move it off that part");
+      }
+      rhs -= phi * bc.values(row);
+    } else if (std::find(taken.begin(), taken.end(), dof) != taken.end()) {
+      throw InputError("shell: point supports " + std::to_string(k + 1) + " and another of u_" + axis(c) +
+                       " share functions at this refinement; move them apart or refine");
+    } else {
+      free.emplace_back(dof, phi);
+    }
+  }
+  fem::DirichletConditions out;
+  if (free.empty()) return out;
+  const auto s = std::max_element(free.begin(), free.end(), [](const auto& a, const auto& b) {
+    return std::abs(a.second) < std::abs(b.second);
+  });
+  out.dofs = {s->first};
+  out.values = Eigen::VectorXd::Constant(1, rhs / s->second);
+  out.coupling.resize(1, 3 * space.num_dofs());
+  std::vector<Eigen::Triplet<double>> t;
+  for (const auto& [dof, phi] : free) {
+    if (dof != s->first) t.emplace_back(0, dof, phi / s->second);
+  }
+  out.coupling.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+// The rigid motions c + ω × x in the space: the translations at every function (partition of unity) and the
+// rotations ω = e_k, whose coefficients are e_k × the control points (the map reproduces x). A combination every
+// condition leaves unchanged (C r = 0 for the homogeneous conditions) is free: the stiffness is singular on it.
+void Shell::refuse_rigid_modes(const basis::Geometry& geometry, const fem::DirichletConditions& bc) const {
+  if (bc.dofs.empty()) {
+    throw InputError("shell: no support: the rigid-body modes (three translations, three rotations) are free; "
+                     "support some displacement components on boundary parts");
+  }
+  const Eigen::MatrixXd& p = geometry.control_points();
+  const Index n = p.rows();
+  Eigen::MatrixXd modes = Eigen::MatrixXd::Zero(3 * n, 6);
+  for (Index i = 0; i < n; ++i) {
+    const Eigen::Vector3d x = p.row(i).transpose();
+    for (int c = 0; c < 3; ++c) {
+      modes(3 * i + c, c) = 1.0;
+      const Eigen::Vector3d r = Eigen::Vector3d::Unit(c).cross(x);
+      for (int j = 0; j < 3; ++j) modes(3 * i + j, 3 + c) = r(j);
+    }
+  }
+  const Eigen::Matrix<double, 6, 1> scale = modes.colwise().norm().transpose().cwiseMax(1e-300);
+  Eigen::MatrixXd c(static_cast<Index>(bc.dofs.size()), 6);
+  for (std::size_t k = 0; k < bc.dofs.size(); ++k) c.row(static_cast<Index>(k)) = modes.row(bc.dofs[k]);
+  if (bc.coupling.nonZeros() > 0) c += bc.coupling * modes;
+  for (int j = 0; j < 6; ++j) c.col(j) /= scale(j);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(c, Eigen::ComputeFullV);
+  const Eigen::VectorXd s = svd.singularValues();
+  if (s.size() == 6 && s(5) > 1e-9 * std::max(s(0), 1e-300)) return;
+  const Eigen::Matrix<double, 6, 1> v = svd.matrixV().col(5).cwiseQuotient(scale);
+  const Eigen::Vector3d t = v.head<3>(), w = v.tail<3>();
+  const double extent = p.cwiseAbs().maxCoeff();
+  auto clean = [](double x, double unit) { return std::abs(x) < 1e-9 * unit ? 0.0 : x; };
+  std::ostringstream msg;
+  msg << "shell: the supports leave a rigid-body mode free (";
+  if (w.norm() * extent < 1e-6 * t.norm()) {
+    const Eigen::Vector3d d = t.normalized();
+    msg << "the translation along (" << clean(d(0), 1.0) << ", " << clean(d(1), 1.0) << ", " << clean(d(2), 1.0) << ")";
+  } else {
+    const Eigen::Vector3d d = w.normalized(), x0 = w.cross(t) / w.squaredNorm();  // t + ω × x = ω × (x − x0)
+    msg << "the rotation about the axis along (" << clean(d(0), 1.0) << ", " << clean(d(1), 1.0) << ", "
+        << clean(d(2), 1.0) << ") through (" << clean(x0(0), extent) << ", " << clean(x0(1), extent) << ", "
+        << clean(x0(2), extent) << ")";
+  }
+  msg << "): the stiffness matrix is singular; support more components or parts";
+  throw InputError(msg.str());
+}
+
+}  // namespace
+
+std::shared_ptr<const fem::Problem> make_shell(ShellData data) { return std::make_shared<Shell>(std::move(data)); }
+
+Eigen::Vector3d shell_displacement(const basis::Space& space, const Eigen::VectorXd& u, Index e,
+                                   const Eigen::Vector2d& uv) {
+  Eigen::Matrix2Xd at(2, 1);
+  at.col(0) = uv;
+  basis::BasisValues bv;
+  space.evaluate(e, at, 0, bv);
+  const auto dofs = space.dofs(e);
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  for (std::size_t a = 0; a < dofs.size(); ++a) out += bv.value(static_cast<Index>(a), 0) * u.segment<3>(3 * dofs[a]);
+  return out;
+}
+
+}  // namespace iga::pde
