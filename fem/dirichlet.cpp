@@ -214,6 +214,72 @@ DirichletConditions component_conditions(const DirichletConditions& scalar, int 
   return bc;
 }
 
+DirichletConditions linear_conditions(const Eigen::SparseMatrix<double, Eigen::RowMajor>& r,
+                                      const std::vector<Index>& prefer, double tolerance) {
+  // The touched columns, preferred ones first.
+  std::vector<char> touched(static_cast<std::size_t>(r.cols()), 0);
+  for (Index i = 0; i < r.outerSize(); ++i) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(r, i); it; ++it) {
+      if (it.value() != 0.0) touched[static_cast<std::size_t>(it.col())] = 1;
+    }
+  }
+  std::vector<Index> order;
+  std::vector<Index> column(static_cast<std::size_t>(r.cols()), -1);
+  for (Index p : prefer) {
+    if (p >= 0 && p < r.cols() && touched[static_cast<std::size_t>(p)] == 1) {
+      touched[static_cast<std::size_t>(p)] = 2;
+      order.push_back(p);
+    }
+  }
+  for (Index c = 0; c < r.cols(); ++c) {
+    if (touched[static_cast<std::size_t>(c)] == 1) order.push_back(c);
+  }
+  for (std::size_t k = 0; k < order.size(); ++k) column[static_cast<std::size_t>(order[k])] = static_cast<Index>(k);
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(r.rows(), static_cast<Index>(order.size()));
+  for (Index i = 0; i < r.outerSize(); ++i) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(r, i); it; ++it) {
+      if (it.value() != 0.0) a(i, column[static_cast<std::size_t>(it.col())]) += it.value();
+    }
+  }
+  for (Index i = 0; i < a.rows(); ++i) {
+    const double m = a.row(i).cwiseAbs().maxCoeff();
+    if (m > 0) a.row(i) /= m;
+  }
+  std::vector<std::pair<Index, Index>> pivots;  // (dof, row of a)
+  Index rank = 0;
+  for (Index j = 0; j < a.cols() && rank < a.rows(); ++j) {
+    Index best = rank;
+    a.col(j).tail(a.rows() - rank).cwiseAbs().maxCoeff(&best);
+    best += rank;
+    if (!(std::abs(a(best, j)) > tolerance)) continue;
+    a.row(best).swap(a.row(rank));
+    a.row(rank) /= a(rank, j);
+    for (Index i = 0; i < a.rows(); ++i) {
+      if (i != rank && a(i, j) != 0.0) a.row(i) -= a(i, j) * a.row(rank);
+    }
+    pivots.emplace_back(order[static_cast<std::size_t>(j)], rank);
+    ++rank;
+  }
+  std::sort(pivots.begin(), pivots.end());
+  std::vector<char> is_pivot(order.size(), 0);
+  for (const auto& [dof, row] : pivots) is_pivot[static_cast<std::size_t>(column[static_cast<std::size_t>(dof)])] = 1;
+  DirichletConditions bc;
+  bc.values = Eigen::VectorXd::Zero(static_cast<Index>(pivots.size()));
+  std::vector<Eigen::Triplet<double>> t;
+  for (std::size_t k = 0; k < pivots.size(); ++k) {
+    bc.dofs.push_back(pivots[k].first);
+    for (Index j = 0; j < a.cols(); ++j) {
+      const double v = a(pivots[k].second, j);
+      if (!is_pivot[static_cast<std::size_t>(j)] && std::abs(v) > 1e-14) {
+        t.emplace_back(static_cast<Index>(k), order[static_cast<std::size_t>(j)], v);
+      }
+    }
+  }
+  bc.coupling.resize(static_cast<Index>(pivots.size()), r.cols());
+  bc.coupling.setFromTriplets(t.begin(), t.end());
+  return bc;
+}
+
 DirichletConditions merge_conditions(const std::vector<DirichletConditions>& sets, Index num_dofs) {
   std::vector<std::pair<Index, std::pair<std::size_t, Index>>> all;  // dof → (set, row)
   bool coupled = false;

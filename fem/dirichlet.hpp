@@ -42,6 +42,14 @@ DirichletConditions component_conditions(const DirichletConditions& scalar, int 
 /// condition over both parts).
 DirichletConditions merge_conditions(const std::vector<DirichletConditions>& sets, Index num_dofs);
 
+/// Homogeneous linear conditions R u = 0 (rows of R over num_dofs dofs; redundant rows allowed) as conditions
+/// u_S = −coupling u with one dof of S per independent row: Gauss–Jordan elimination with partial pivoting over the
+/// columns R touches, the dofs in `prefer` tried first as pivots (in that order), the others ascending; rows scaled to
+/// unit largest entry, a pivot below `tolerance` of that makes its column free. The coupling is zero on S's columns.
+/// Dense in the touched columns: for conditions along boundaries (a slope held on an edge), not whole domains.
+DirichletConditions linear_conditions(const Eigen::SparseMatrix<double, Eigen::RowMajor>& r,
+                                      const std::vector<Index>& prefer, double tolerance = 1e-10);
+
 /// The system for the free dofs: A_ff u_f = b_f - A_fd g_d; with coupled conditions u = u0 + T w and
 /// Tᵀ A T w = Tᵀ (b − A u0), T = identity on the free dofs and −coupling on the constrained ones.
 struct ReducedSystem {

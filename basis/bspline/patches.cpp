@@ -93,6 +93,45 @@ Geometry make_cylinder_patch(int degree, double radius, double length, double th
   return make_rational_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp, weights);
 }
 
+namespace {
+// The circular arc of unit radius from angle a0 to a1 (< π apart) as a rational quadratic Bézier curve in homogeneous
+// coordinates (w cos, w sin, w), raised to degree p.
+Eigen::MatrixXd unit_arc(double a0, double a1, int degree) {
+  const double half = 0.5 * (a1 - a0), mid = a0 + half, w = std::cos(half), far = 1.0 / w;
+  Eigen::MatrixXd arc(3, 3);
+  arc << std::cos(a0), std::sin(a0), 1.0, w * far * std::cos(mid), w * far * std::sin(mid), w, std::cos(a1),
+      std::sin(a1), 1.0;
+  return elevate_to(arc, degree);
+}
+}  // namespace
+
+Geometry make_sphere_patch(int degree, double radius, double lambda0, double lambda1, double phi0, double phi1) {
+  if (degree < 2) {
+    throw InputError("sphere patch: the arcs are quadratic, degree " + std::to_string(degree) +
+                     " cannot represent them; use degree >= 2");
+  }
+  if (!(radius > 0.0) || !std::isfinite(radius)) throw InputError("sphere patch: need a radius > 0");
+  const double half_pi = 0.5 * std::numbers::pi;
+  if (!(lambda1 - lambda0 > 0.0 && lambda1 - lambda0 < std::numbers::pi) || !(phi1 - phi0 > 0.0) ||
+      !(phi0 >= -half_pi && phi1 <= half_pi)) {
+    throw InputError("sphere patch: need 0 < lambda1 - lambda0 < pi and -pi/2 <= phi0 < phi1 <= pi/2");
+  }
+  const Eigen::MatrixXd parallel = unit_arc(lambda0, lambda1, degree), meridian = unit_arc(phi0, phi1, degree);
+  const int n = degree + 1;
+  Eigen::MatrixXd cp(n * n, 3);
+  Eigen::VectorXd weights(n * n);
+  for (int j = 0; j < n; ++j) {
+    // Meridian point j: distance from the axis r = cos φ, height z = sin φ (homogeneous: divided by its weight).
+    const double r = meridian(j, 0) / meridian(j, 2), z = meridian(j, 1) / meridian(j, 2);
+    for (int i = 0; i < n; ++i) {
+      cp.row(i + n * j) << radius * r * parallel(i, 0) / parallel(i, 2), radius * r * parallel(i, 1) / parallel(i, 2),
+          radius * z;
+      weights(i + n * j) = parallel(i, 2) * meridian(j, 2);
+    }
+  }
+  return make_rational_patch(KnotVector::uniform(degree, 1), KnotVector::uniform(degree, 1), cp, weights);
+}
+
 Geometry make_plate_with_hole(int degree, double radius, double side) {
   if (degree < 2) {
     throw InputError("plate with a hole: the hole is quadratic, degree " + std::to_string(degree) +

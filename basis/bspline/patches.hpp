@@ -34,6 +34,14 @@ Geometry make_plate_with_hole(int degree, double radius = 1.0, double side = 4.0
 /// octant θ in [0, 90°]. InputError for p < 2, R or L not > 0, or the angle range outside (0, π).
 Geometry make_cylinder_patch(int degree, double radius, double length, double theta0, double theta1);
 
+/// A zone of the sphere x = R (cos φ cos λ, cos φ sin λ, sin φ), λ0 <= λ <= λ1 (longitude), φ0 <= φ <= φ1
+/// (latitude), radians, each range in (0, π) and |φ| <= π/2, exactly, as one NURBS patch of degree (p, p), p >= 2: the
+/// surface of revolution of the rational quadratic meridian arc about the z axis (weights the products of the two
+/// arcs' weights), u along the parallels (longitude), v along the meridians. Boundary parts: v0 the parallel at φ0,
+/// v1 at φ1, u0 the meridian at λ0, u1 at λ1. The pinched hemisphere with an 18° hole is a quarter: λ in [0, 90°],
+/// φ in [0, 72°]. InputError for p < 2, R not > 0 or a range outside (0, π) or beyond the poles.
+Geometry make_sphere_patch(int degree, double radius, double lambda0, double lambda1, double phi0, double phi1);
+
 /// The rectangle [x0,x1]×[y0,y1] (affine map) as a single Bézier patch of degree (p, p), p >= 1.
 Geometry make_rectangle(int degree, double x0 = 0.0, double x1 = 1.0, double y0 = 0.0, double y1 = 1.0);
 

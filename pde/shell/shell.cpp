@@ -10,6 +10,7 @@
 #include "fem/dirichlet.hpp"
 #include "fem/linear_system.hpp"
 #include "fem/smoothness.hpp"
+#include "quadrature/gauss_legendre.hpp"
 
 namespace iga::pde {
 
@@ -82,6 +83,9 @@ class Shell final : public fem::Problem {
     return out;
   }
   void refuse_rigid_modes(const basis::Geometry& geometry, const fem::DirichletConditions& bc) const;
+  void add_slope_equations(const fem::Assembler& scalar, const std::vector<int>& parts,
+                           std::vector<Eigen::Triplet<double>>& rows, std::vector<Index>& prefer) const;
+  fem::DirichletConditions zero_union(const std::vector<fem::DirichletConditions>& held, int c) const;
   fem::DirichletConditions point_support(const basis::Space& space, std::size_t k, const fem::DirichletConditions& bc,
                                          const std::vector<Index>& taken) const;
 
@@ -112,17 +116,26 @@ void Shell::check(const basis::Geometry& geometry) const {
       }
     }
   };
-  bool seen[3] = {false, false, false};
+  int count[3] = {0, 0, 0};
+  bool valued[3] = {false, false, false};
   for (const ShellSupport& s : d_.supports) {
     if (s.component < 0 || s.component > 2) {
       throw InputError("shell: support component " + std::to_string(s.component) + " (0 is x, 1 is y, 2 is z)");
     }
     const std::string what = std::string("support u_") + axis(s.component);
     check_parts(s.parts, what);
-    if (seen[s.component]) {
-      throw InputError("shell: " + what + " is given twice: give it one condition over all its parts");
+    if (s.hold != Hold::kValue && s.value) {
+      throw InputError("shell: " + what + ": a support that holds the slope holds the value 0 (or none); give the "
+                       "value in a support of its own");
     }
-    seen[s.component] = true;
+    ++count[s.component];
+    valued[s.component] = valued[s.component] || s.value;
+  }
+  for (int c = 0; c < 3; ++c) {
+    if (valued[c] && count[c] > 1) {
+      throw InputError(std::string("shell: support u_") + axis(c) +
+                       " has a value and another support: give it one condition over all its parts");
+    }
   }
   for (const ShellLineLoad& l : d_.line_loads) check_parts(l.parts, "line load");
   points_.clear();
@@ -178,18 +191,49 @@ void Shell::add_boundary_terms(const fem::Assembler& assembler, fem::LinearSyste
 
 fem::DirichletConditions Shell::constraints(const fem::Assembler& assembler, fem::Choices& choices) const {
   const fem::Assembler scalar(assembler.geometry(), assembler.rules());
+  const Index n = assembler.geometry().space().num_dofs();
   std::vector<fem::DirichletConditions> sets;
-  for (const ShellSupport& s : d_.supports) {
-    const fem::DirichletConditions c =
-        fem::project_dirichlet(scalar, on(s.parts), s.value ? s.value : fem::constant_function(0.0));
-    sets.push_back(fem::component_conditions(c, s.component, 3));
-    choices.emplace_back(std::string("support u_") + axis(s.component),
-                         part_list(s.parts, names_) + ": strong (L2 projection)");
+  for (int c = 0; c < 3; ++c) {
+    std::vector<fem::DirichletConditions> held;  // values, on the scalar space
+    std::vector<Eigen::Triplet<double>> slopes;  // the slope equations' rows
+    std::vector<Index> prefer;
+    for (const ShellSupport& s : d_.supports) {
+      if (s.component != c) continue;
+      if (s.hold != Hold::kSlope) {
+        held.push_back(fem::project_dirichlet(scalar, on(s.parts), s.value ? s.value : fem::constant_function(0.0)));
+      }
+      if (s.hold != Hold::kValue) add_slope_equations(scalar, s.parts, slopes, prefer);
+      const char* how = s.hold == Hold::kValue ? ": value, strong (L2 projection)"
+                        : s.hold == Hold::kSlope ? ": slope"
+                                                 : ": value and slope";
+      choices.emplace_back(std::string("support u_") + axis(c), part_list(s.parts, names_) + how);
+    }
+    if (held.empty() && slopes.empty()) continue;
+    fem::DirichletConditions values = held.size() == 1 ? held[0] : zero_union(held, c);
+    if (!slopes.empty()) {
+      if (values.coupling.nonZeros() > 0) {
+        throw UnsupportedError(std::string("shell: support u_") + axis(c) +
+                               ": a slope held together with values on a space whose traces are coupled");
+      }
+      // The values' dofs leave the slope equations (their values are 0: one valued support is alone).
+      std::vector<char> fixed(static_cast<std::size_t>(n), 0);
+      for (Index d : values.dofs) fixed[static_cast<std::size_t>(d)] = 1;
+      std::erase_if(slopes, [&](const Eigen::Triplet<double>& t) { return fixed[static_cast<std::size_t>(t.col())] != 0; });
+      Eigen::SparseMatrix<double, Eigen::RowMajor> rows(n, n);
+      rows.setFromTriplets(slopes.begin(), slopes.end());
+      values = fem::merge_conditions({values, fem::linear_conditions(rows, prefer)}, n);
+    }
+    sets.push_back(fem::component_conditions(values, c, 3));
   }
   fem::DirichletConditions bc = fem::merge_conditions(sets, assembler.num_dofs());
   if (!d_.point_supports.empty()) {
     std::vector<fem::DirichletConditions> with{bc};
-    std::vector<Index> taken;  // the dofs earlier point supports couple
+    std::vector<Index> taken;  // the dofs the conditions so far couple
+    for (Index r = 0; r < bc.coupling.outerSize(); ++r) {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(bc.coupling, r); it; ++it) {
+        taken.push_back(it.col());
+      }
+    }
     for (std::size_t k = 0; k < d_.point_supports.size(); ++k) {
       with.push_back(point_support(assembler.geometry().space(), k, bc, taken));
       const fem::DirichletConditions& p = with.back();
@@ -207,6 +251,62 @@ fem::DirichletConditions Shell::constraints(const fem::Assembler& assembler, fem
   }
   refuse_rigid_modes(assembler.geometry(), bc);
   return bc;
+}
+
+// The rows ∫_Γ ∂_n u ∂_n φ_s = 0 of ∂_n u = 0 on the parts, one per function φ_s with a slope there (Gauss points of
+// the sides, ∂_n along the outward conormal); `prefer` gets those whose value vanishes on the parts (the second row of
+// a patch), the dofs the elimination should solve for.
+void Shell::add_slope_equations(const fem::Assembler& scalar, const std::vector<int>& parts,
+                                std::vector<Eigen::Triplet<double>>& rows, std::vector<Index>& prefer) const {
+  const basis::Space& space = scalar.geometry().space();
+  const int degree = std::max(space.polynomial_degree(0).value_or(3), 1);
+  const quadrature::Rule1D line = quadrature::gauss_legendre(degree + 3);
+  fem::BoundaryContext ctx;
+  std::vector<char> valued(static_cast<std::size_t>(space.num_dofs()), 0), sloped = valued;
+  Eigen::VectorXd slope;
+  for (const basis::BoundaryEdge& edge : on(parts)) {
+    scalar.prepare_side(edge.element, edge.side, 0.0, 1.0, line, ctx);
+    const auto dofs = space.dofs(edge.element);
+    const Index m = static_cast<Index>(dofs.size()), q = ctx.basis.value.cols();
+    Eigen::MatrixXd dn(m, q);
+    for (Index k = 0; k < q; ++k) {
+      for (Index a = 0; a < m; ++a) {
+        const Eigen::Vector3d grad = ctx.geo.tu.col(k) * ctx.basis.du(a, k) + ctx.geo.tv.col(k) * ctx.basis.dv(a, k);
+        dn(a, k) = grad.dot(ctx.conormal.col(k));
+      }
+    }
+    const Eigen::MatrixXd mass = dn * ctx.weight.asDiagonal() * dn.transpose();
+    const double scale = mass.cwiseAbs().maxCoeff();
+    for (Index a = 0; a < m; ++a) {
+      const std::size_t da = static_cast<std::size_t>(dofs[static_cast<std::size_t>(a)]);
+      if (ctx.basis.value.row(a).cwiseAbs().maxCoeff() > 1e-13) valued[da] = 1;
+      if (mass(a, a) <= 1e-14 * scale) continue;
+      sloped[da] = 1;
+      for (Index b = 0; b < m; ++b) {
+        if (mass(a, b) != 0.0) rows.emplace_back(dofs[static_cast<std::size_t>(a)], dofs[static_cast<std::size_t>(b)], mass(a, b));
+      }
+    }
+  }
+  for (std::size_t i = 0; i < sloped.size(); ++i) {
+    if (sloped[i] && !valued[i]) prefer.push_back(static_cast<Index>(i));
+  }
+}
+
+// Several zero conditions on one component as one: the union of their dofs (coupled ones cannot be joined).
+fem::DirichletConditions Shell::zero_union(const std::vector<fem::DirichletConditions>& held, int c) const {
+  fem::DirichletConditions out;
+  for (const fem::DirichletConditions& h : held) {
+    if (h.coupling.nonZeros() > 0) {
+      throw UnsupportedError(std::string("shell: support u_") + axis(c) +
+                             " on several parts of a space whose traces are coupled: give it one support over all "
+                             "its parts");
+    }
+    out.dofs.insert(out.dofs.end(), h.dofs.begin(), h.dofs.end());
+  }
+  std::sort(out.dofs.begin(), out.dofs.end());
+  out.dofs.erase(std::unique(out.dofs.begin(), out.dofs.end()), out.dofs.end());
+  out.values = Eigen::VectorXd::Zero(static_cast<Index>(out.dofs.size()));
+  return out;
 }
 
 // Σ_a φ_a(x) u_{a,c} = 0 as u_s = −Σ_{a≠s} (φ_a/φ_s) u_a − Σ_{a supported} (φ_a/φ_s) g_a, s the free dof of the
@@ -235,8 +335,9 @@ fem::DirichletConditions Shell::point_support(const basis::Space& space, std::si
       }
       rhs -= phi * bc.values(row);
     } else if (std::find(taken.begin(), taken.end(), dof) != taken.end()) {
-      throw InputError("shell: point supports " + std::to_string(k + 1) + " and another of u_" + axis(c) +
-                       " share functions at this refinement; move them apart or refine");
+      throw InputError("shell: point support " + std::to_string(k + 1) + " of u_" + axis(c) +
+                       " lies on functions another condition couples (a held slope or another point support) at this "
+                       "refinement; move it or refine");
     } else {
       free.emplace_back(dof, phi);
     }

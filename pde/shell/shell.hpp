@@ -14,12 +14,25 @@
 
 namespace iga::pde {
 
-/// u_c = value on the boundary parts (Space::boundary_part_names() indices); component 0 is x, 1 y, 2 z. A rigid
-/// diaphragm in the plane x = const is {1, ...} and {2, ...}: the displacements in its plane are held.
+/// What a support holds of component c on its parts.
+enum class Hold {
+  kValue,          ///< u_c = value
+  kValueAndSlope,  ///< u_c = 0 and ∂u_c/∂n = 0: the three components so held are a clamped edge
+  kSlope,          ///< ∂u_c/∂n = 0 alone: with kValue on the plane's normal component, a symmetry plane
+};
+
+/// A support of component c (0 is x, 1 y, 2 z) on boundary parts (Space::boundary_part_names() indices). A rigid
+/// diaphragm in the plane y = const holds the values of u_x and u_z; a symmetry plane normal to axis c holds the value
+/// of u_c and the slopes of the other two (they are even across the plane), which fixes the rotation about the edge; a
+/// clamped edge holds value and slope of all three. Slopes are held as ∫_Γ ∂_n u ∂_n φ_s = 0 for every function φ_s
+/// with a slope on Γ (exactly ∂_n u = 0 on Γ when the slopes' traces span ∂_n u's, as on B-spline and NURBS patches),
+/// eliminated together with the other conditions of the component (fem::linear_conditions). A component may have
+/// several supports holding 0; one with a value must be its only one.
 struct ShellSupport {
   int component = 0;
   std::vector<int> parts;
-  std::shared_ptr<const fem::Function> value;  ///< null: 0
+  std::shared_ptr<const fem::Function> value;  ///< null: 0 (kValue only)
+  Hold hold = Hold::kValue;
 };
 
 /// q = (q_x, q_y, q_z)(x, n) per unit length on the parts; null components 0.

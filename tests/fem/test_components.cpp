@@ -80,6 +80,30 @@ TEST(Components, ConditionsPerComponentAndTheirMerge) {
   EXPECT_EQ(fem::merge_conditions({cy}, 15).coupling.coeff(1, 13), 0.25);
 }
 
+// Homogeneous rows R u = 0, one of them redundant (the sum of two others), as conditions: one dof per independent row,
+// the preferred ones first, coupling zero on the conditions' own dofs, and every u they admit satisfies R u = 0.
+TEST(Components, LinearConditionsFromRedundantRows) {
+  Eigen::MatrixXd r(4, 8);
+  r << 1, -1, 0, 0, 0, 0, 2, 0,  //
+      0, 1, -1, 0, 0, 0, 0, 0,   //
+      1, 0, -1, 0, 0, 0, 2, 0,   // row 0 + row 1
+      0, 0, 0, 0.5, 0, -0.5, 0, 0;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rs = r.sparseView();
+  const fem::DirichletConditions bc = fem::linear_conditions(rs, {6, 5});
+  EXPECT_EQ(bc.dofs, (std::vector<Index>{1, 5, 6}));  // 6 and 5 preferred, then the lowest column: 0, 1 (0 drops)
+  ASSERT_EQ(bc.coupling.rows(), 3);
+  for (std::size_t k = 0; k < bc.dofs.size(); ++k) {
+    for (Index d : bc.dofs) EXPECT_EQ(bc.coupling.coeff(static_cast<Index>(k), d), 0.0);
+  }
+  // u = 0 on the conditions' dofs minus the coupling: free values arbitrary.
+  Eigen::VectorXd u(8);
+  u << 0.3, 0, -1.7, 2.2, 0.9, 0, 0, 4.1;
+  Eigen::VectorXd held = bc.values - bc.coupling * u;
+  for (std::size_t k = 0; k < bc.dofs.size(); ++k) u(bc.dofs[k]) = held(static_cast<Index>(k));
+  EXPECT_LT((r * u).norm(), 1e-14);
+  EXPECT_NE(u(6), 0.0);
+}
+
 TEST(Hessians, TheDefaultDifferenceMatchesClosedForms) {
   // u = sin(x) e^{2y} + x³ z: its Hessian in closed form; the default differences the closed-form gradient.
   auto f = [](const Eigen::Vector3d& p) { return std::sin(p(0)) * std::exp(2 * p(1)) + std::pow(p(0), 3) * p(2); };

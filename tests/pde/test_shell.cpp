@@ -229,8 +229,8 @@ TEST(Shell, Refusals) {
   d.point_loads = {{Eigen::Vector3d(0.0, 25.0, 20.0), Eigen::Vector3d(0.0, 0.0, -1.0)}};
   EXPECT_EQ(message(roof, d).substr(0, 61), "shell: point load 1: (0, 25, 20) is not on the surface: the n");
   d = roof_data();
-  d.supports.push_back({0, {kU0}, nullptr});
-  EXPECT_EQ(message(roof, d), "shell: support u_x is given twice: give it one condition over all its parts");
+  d.supports.push_back({0, {kU0}, fem::constant_function(0.1)});
+  EXPECT_EQ(message(roof, d), "shell: support u_x has a value and another support: give it one condition over all its parts");
   EXPECT_EQ(message(lifted(basis::bspline::make_plate_with_hole(3)), roof_data()).substr(0, 82),
             "shell: the space is only C0 across the side shared by elements 0 and 1 (midpoint (");
   EXPECT_EQ(message(basis::bspline::make_rectangle(3), roof_data()),
@@ -263,4 +263,83 @@ TEST(Shell, LocatesPointsOnTheSurface) {
       }
     }
   }
+}
+
+// The cylinder and sphere patches are exact: every point at the radius from the axis or the centre.
+TEST(Shell, CylinderAndSpherePatchesAreExact) {
+  for (int degree : {2, 3, 5}) {
+    const basis::Geometry cylinder =
+        refine::refine_uniform(basis::bspline::make_cylinder_patch(degree, 300.0, 600.0, 0.0, 90 * kDeg), 1).geometry;
+    const basis::Geometry sphere =
+        refine::refine_uniform(basis::bspline::make_sphere_patch(degree, 10.0, 0.0, 90 * kDeg, 0.0, 72 * kDeg), 1).geometry;
+    Eigen::Matrix2Xd at(2, 3);
+    at << 0.0, 0.37, 1.0, 0.0, 0.81, 0.5;
+    for (Index e = 0; e < 4; ++e) {
+      basis::GeometryValues c, s;
+      cylinder.evaluate(e, at, c);
+      sphere.evaluate(e, at, s);
+      for (Index k = 0; k < 3; ++k) {
+        EXPECT_NEAR(std::hypot(c.x(0, k), c.x(2, k)), 300.0, 1e-10);
+        EXPECT_NEAR(s.x.col(k).norm(), 10.0, 1e-12);
+        EXPECT_LE(s.x(2, k), 10 * std::sin(72 * kDeg) + 1e-12);
+      }
+    }
+  }
+}
+
+// The pinched cylinder (R = 300, L = 600, t = 3, E = 3e6, ν = 0.3, rigid diaphragms, two opposite loads P = 1 at
+// mid-length): one octant, x >= 0, z >= 0, y in [0, 300], with the diaphragm at y = 0 and symmetry planes x = 0, z = 0
+// and y = 300, P/4 at the corner (0, 300, 300). The radial displacement under the load converges to 1.8248e-5
+// (Belytschko et al. 1985; the thin-shell value).
+TEST(Shell, PinchedCylinder) {
+  std::vector<double> w;
+  for (int refine = 3; refine <= 5; ++refine) {
+    const basis::Geometry g =
+        refine::refine_uniform(basis::bspline::make_cylinder_patch(4, 300.0, 300.0, 0.0, 90 * kDeg), refine).geometry;
+    pde::ShellData d;
+    d.material = {3e6, 0.3, 3.0};
+    const auto slope = pde::Hold::kSlope;
+    d.supports = {{0, {kV0, kU0}, nullptr}, {2, {kV0, kU1}, nullptr}, {1, {kV1}, nullptr},
+                  {0, {kU1, kV1}, nullptr, slope}, {1, {kU0, kU1}, nullptr, slope}, {2, {kU0, kV1}, nullptr, slope}};
+    d.point_loads = {{Eigen::Vector3d(0.0, 300.0, 300.0), Eigen::Vector3d(0.0, 0.0, -0.25)}};
+    const fem::ProblemResult r = fem::solve_problem(g, quadrature::Gauss(5), pde::make_shell(d));
+    const basis::LocatedPoint p = basis::locate_point(g, Eigen::Vector3d(0.0, 300.0, 300.0), "load");
+    w.push_back(-pde::shell_displacement(g.space(), r.u, p.element, p.uv)(2));
+    std::cout << "pinched cylinder, p = 4, " << (1 << refine) << " x " << (1 << refine) << ", " << r.dofs
+              << " dofs: w = " << w.back() << " (" << 100 * (w.back() / 1.8248e-5 - 1) << " % from 1.8248e-5)\n";
+  }
+  EXPECT_LT(std::abs(w[1] / 1.8248e-5 - 1), 0.01);
+  EXPECT_LT(std::abs(w[2] / 1.8248e-5 - 1), 0.01);
+  EXPECT_LT(std::abs(w[2] - w[1]), 0.5 * std::abs(w[1] - w[0]));
+}
+
+// The pinched hemisphere with an 18° hole (R = 10, t = 0.04, E = 6.825e7, ν = 0.3): one quarter, symmetry planes
+// y = 0 and x = 0, held vertically at one point of the hole's edge, loads 1 outward along x at (10, 0, 0) and inward
+// along y at (0, 10, 0) (the quarter's share: F = 2 on the whole hemisphere, MacNeal and Harder 1985). The displacement
+// under the load converges to 0.09352 here: 1.2 % above 0.0924 (Belytschko et al. 1985, the value the issue names)
+// and 0.5 % below MacNeal and Harder's 0.094 — within 1.5 % and 1 % of them, and changing by 2e-4 between the last two levels.
+TEST(Shell, PinchedHemisphere) {
+  std::vector<double> w;
+  for (int refine = 3; refine <= 5; ++refine) {
+    const basis::Geometry g =
+        refine::refine_uniform(basis::bspline::make_sphere_patch(4, 10.0, 0.0, 90 * kDeg, 0.0, 72 * kDeg), refine).geometry;
+    pde::ShellData d;
+    d.material = {6.825e7, 0.3, 0.04};
+    const auto slope = pde::Hold::kSlope;
+    d.supports = {{1, {kU0}, nullptr}, {0, {kU1}, nullptr}, {0, {kU0}, nullptr, slope}, {1, {kU1}, nullptr, slope},
+                  {2, {kU0, kU1}, nullptr, slope}};
+    const double rc = 10 * std::cos(72 * kDeg);
+    d.point_supports = {{Eigen::Vector3d(rc * std::sqrt(0.5), rc * std::sqrt(0.5), 10 * std::sin(72 * kDeg)), 2}};
+    d.point_loads = {{Eigen::Vector3d(10.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0)},
+                     {Eigen::Vector3d(0.0, 10.0, 0.0), Eigen::Vector3d(0.0, -1.0, 0.0)}};
+    const fem::ProblemResult r = fem::solve_problem(g, quadrature::Gauss(5), pde::make_shell(d));
+    const basis::LocatedPoint p = basis::locate_point(g, Eigen::Vector3d(10.0, 0.0, 0.0), "load");
+    w.push_back(pde::shell_displacement(g.space(), r.u, p.element, p.uv)(0));
+    std::cout << "pinched hemisphere, p = 4, " << (1 << refine) << " x " << (1 << refine) << ", " << r.dofs
+              << " dofs: u = " << w.back() << " (" << 100 * (w.back() / 0.0924 - 1) << " % from 0.0924, "
+              << 100 * (w.back() / 0.094 - 1) << " % from 0.094)\n";
+  }
+  EXPECT_LT(std::abs(w[2] / 0.0924 - 1), 0.015);
+  EXPECT_LT(std::abs(w[2] / 0.094 - 1), 0.01);
+  EXPECT_LT(std::abs(w[2] - w[1]), 5e-4 * w[2]);  // measured 2.0e-4
 }
