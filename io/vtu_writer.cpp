@@ -1,5 +1,7 @@
 #include "io/vtu_writer.hpp"
 
+#include <algorithm>
+
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -116,8 +118,10 @@ void sample_element(Index e, const basis::Geometry& geometry, const SamplePatter
   thread_local basis::GeometryValues gv;
   thread_local Eigen::VectorXd values, exact_values;
   thread_local Eigen::Matrix3Xd grads;
-  geometry.space().evaluate(e, p.points, 1, bv);
-  geometry.evaluate(e, bv, gv, /*check=*/false);
+  int derivatives = 1;
+  for (const SampledField& f : options.fields) derivatives = std::max(derivatives, f.derivatives);
+  geometry.space().evaluate(e, p.points, derivatives, bv);
+  geometry.evaluate(e, bv, gv, /*check=*/false, derivatives);
   const bool with_grad = a.grad != nullptr, with_exact = a.exact != nullptr;
   if (sample != nullptr) (*sample)(e, p.points, bv, gv, values, with_grad ? &grads : nullptr);
   if (with_exact) options.exact->values(gv.x, exact_values);

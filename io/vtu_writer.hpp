@@ -23,6 +23,9 @@ struct SampledField {
   int components = 1;
   std::function<void(Index e, const basis::BasisValues& basis, const basis::GeometryValues& geo, Eigen::MatrixXd& out)>
       values;
+  /// What values() reads: 1 the basis with first derivatives and the map's Jacobian, 2 also the second derivatives
+  /// of both (curvatures, bending moments). The writer evaluates the largest any field asks for.
+  int derivatives = 1;
 };
 
 struct VtuOptions {

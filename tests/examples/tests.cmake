@@ -29,8 +29,10 @@ set_tests_properties(example_poisson_petsc PROPERTIES LABELS "examples;mpi" TIME
 # Fourth-order plates and elasticity (pde/): serial, and under mpirun at 2 ranks compared with CHOLMOD to 1e-10.
 add_test(NAME example_biharmonic_plate COMMAND biharmonic_plate WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
 add_test(NAME example_plate_with_hole COMMAND plate_with_hole WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
-set_tests_properties(example_biharmonic_plate example_plate_with_hole PROPERTIES LABELS examples TIMEOUT 300)
-foreach(example biharmonic_plate plate_with_hole)
+add_test(NAME example_scordelis_lo_roof COMMAND scordelis_lo_roof WORKING_DIRECTORY ${IGA_EXAMPLE_DIR})
+set_tests_properties(example_biharmonic_plate example_plate_with_hole example_scordelis_lo_roof PROPERTIES LABELS examples
+                     TIMEOUT 300)
+foreach(example biharmonic_plate plate_with_hole scordelis_lo_roof)
   add_test(NAME example_${example}_petsc
            COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} 2 --allow-run-as-root --oversubscribe
                    $<TARGET_FILE:${example}> --petsc
