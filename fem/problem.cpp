@@ -101,6 +101,7 @@ void ProblemSolver::solve() {
   r_.element_owner = std::move(s.element_owner);
   r_.u = std::move(s.x);
   problem_->finish(*sys_->assembler, r_.u);
+  r_.quantities = problem_->quantities(*sys_->assembler, r_.u);
   done_ = 3;
 }
 

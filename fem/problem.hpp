@@ -49,6 +49,12 @@ class Problem {
   /// The solution after the solve, on every process (a constant removed for a mean-zero solution): by default as it
   /// is.
   virtual void finish(const Assembler& /*assembler*/, Eigen::VectorXd& /*u*/) const {}
+  /// Scalar quantities of the solution a report shows beside the error norms (a shell's strain energy), in report
+  /// order, computed on every process after finish(); none by default.
+  virtual std::vector<std::pair<std::string, double>> quantities(const Assembler& /*assembler*/,
+                                                              const Eigen::VectorXd& /*u*/) const {
+    return {};
+  }
   /// The error figures, in report order; none without an exact solution.
   virtual std::vector<std::string> error_names() const = 0;
   /// Their squares over the whole domain, error² and exact² per name and (optionally) the squared estimates of
@@ -90,6 +96,7 @@ struct ProblemResult {
   std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc; for the output's pieces)
   std::vector<NormError> errors;    ///< with an exact solution, in the order of Problem::error_names()
   Choices choices;
+  std::vector<std::pair<std::string, double>> quantities;  ///< Problem::quantities
   /// The figure of that name; InputError when it was not computed.
   const NormError& error(const std::string& name) const;
 };

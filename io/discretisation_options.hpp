@@ -41,7 +41,9 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
   app.add_option("--geometry", o.geometry,
                  "bspline without --mesh: the built-in geometry, quarter-annulus (default, exact: NURBS), l-shape ([0,2]^2 "
                  "minus (1,2]^2, one patch with a C0 line from the reflex corner), square (the unit square), "
-                 "plate-with-hole ([0,4]^2 minus the disc r < 1, exact: NURBS), or a patch file FILE.json (README, Patch files)")
+                 "plate-with-hole ([0,4]^2 minus the disc r < 1, exact: NURBS), the shell surfaces scordelis-lo-roof, "
+                 "pinched-cylinder (an octant), pinched-hemisphere (a quarter; exact: NURBS; iga-shell), or a patch file "
+                 "FILE.json (README, Patch files)")
       ->check(non_blank());
   app.add_option("--cc-boundary", o.cc_boundary,
                  "cc: natural (the limit boundary rule of OpenSubdiv: u_nn = 0 on the boundary, L2 rate 2.5) or clamped (one "

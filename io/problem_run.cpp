@@ -32,6 +32,10 @@ void report_problem_result(nlohmann::json& j, const fem::ProblemResult& r, const
   report_solve(j, r, solver);
   j["choices"] = nlohmann::json::object();
   for (const auto& [what, how] : r.choices) j["choices"][what] = how;
+  if (!r.quantities.empty()) {
+    j["quantities"] = nlohmann::json::object();
+    for (const auto& [name, value] : r.quantities) j["quantities"][name] = value;
+  }
   j["errors"] = nlohmann::json::object();
   j["error_order"] = nlohmann::json::array();
   for (const fem::NormError& e : r.errors) {

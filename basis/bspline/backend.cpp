@@ -1,5 +1,6 @@
 // Registration of the tensor-product B-spline backend (basis/registry.hpp).
 #include <memory>
+#include <numbers>
 
 #include "basis/bspline/extraction.hpp"
 #include "basis/bspline/knot_insertion.hpp"
@@ -164,8 +165,14 @@ Geometry built_in_geometry(const BackendOptions& o) {
   if (o.geometry == "l-shape") return bspline::make_l_shape(p);
   if (o.geometry == "square") return bspline::make_rectangle(p);
   if (o.geometry == "plate-with-hole") return bspline::make_plate_with_hole(p);
+  // The shell obstacle course's surfaces (pde/shell/problems.hpp gives their loads and supports).
+  const double deg = std::numbers::pi / 180;
+  if (o.geometry == "scordelis-lo-roof") return bspline::make_cylinder_patch(p, 25.0, 50.0, -40 * deg, 40 * deg);
+  if (o.geometry == "pinched-cylinder") return bspline::make_cylinder_patch(p, 300.0, 300.0, 0.0, 90 * deg);
+  if (o.geometry == "pinched-hemisphere") return bspline::make_sphere_patch(p, 10.0, 0.0, 90 * deg, 0.0, 72 * deg);
   throw InputError("--geometry: unknown built-in geometry '" + o.geometry +
-                   "' (quarter-annulus, l-shape, square, plate-with-hole, or a patch file FILE.json)");
+                   "' (quarter-annulus, l-shape, square, plate-with-hole, scordelis-lo-roof, pinched-cylinder, "
+                   "pinched-hemisphere, or a patch file FILE.json)");
 }
 
 }  // namespace

@@ -69,6 +69,8 @@ class Shell final : public fem::Problem {
                           fem::Choices& choices) const override;
   fem::DirichletConditions constraints(const fem::Assembler& assembler, fem::Choices& choices) const override;
   std::vector<std::string> error_names() const override { return {}; }
+  std::vector<std::pair<std::string, double>> quantities(const fem::Assembler& assembler,
+                                                         const Eigen::VectorXd& u) const override;
   Eigen::VectorXd error_squares(const fem::Assembler&, const Eigen::VectorXd&,
                                 const fem::LinearSystem&) const override {
     return {};
@@ -402,6 +404,29 @@ void Shell::refuse_rigid_modes(const basis::Geometry& geometry, const fem::Diric
   }
   msg << "): the stiffness matrix is singular; support more components or parts";
   throw InputError(msg.str());
+}
+
+// ½ ∫ t εᵀDε and ½ ∫ t³/12 κᵀDκ of the solution, at the assembly's rules.
+std::vector<std::pair<std::string, double>> Shell::quantities(const fem::Assembler& assembler,
+                                                              const Eigen::VectorXd& u) const {
+  const basis::Space& space = assembler.geometry().space();
+  const ShellMaterial& m = d_.material;
+  const Eigen::VectorXd e = assembler.integrate(2, [&](const fem::ElementContext& ctx, Eigen::Ref<Eigen::VectorXd> out) {
+    const auto dofs = space.dofs(ctx.element);
+    Eigen::MatrixXd local(static_cast<Index>(dofs.size()), 3);
+    for (std::size_t a = 0; a < dofs.size(); ++a) local.row(static_cast<Index>(a)) = u.segment<3>(3 * dofs[a]).transpose();
+    const basis::BasisValues& b = ctx.basis;
+    const basis::GeometryValues& g = ctx.geo;
+    const Eigen::MatrixXd du = local.transpose() * b.du, dv = local.transpose() * b.dv, duu = local.transpose() * b.duu,
+                          duv = local.transpose() * b.duv, dvv = local.transpose() * b.dvv;
+    for (Index k = 0; k < ctx.num_points(); ++k) {
+      const ShellStrains s = shell_strains(g.xu.col(k), g.xv.col(k), g.xuu.col(k), g.xuv.col(k), g.xvv.col(k), du.col(k),
+                                           dv.col(k), duu.col(k), duv.col(k), dvv.col(k), m);
+      out(0) += 0.5 * ctx.weight(k) * m.thickness * s.membrane.dot(s.material * s.membrane);
+      out(1) += 0.5 * ctx.weight(k) * m.thickness * m.thickness * m.thickness / 12 * s.bending.dot(s.material * s.bending);
+    }
+  }, 2);
+  return {{"strain energy", e(0) + e(1)}, {"membrane energy", e(0)}, {"bending energy", e(1)}};
 }
 
 }  // namespace

@@ -43,12 +43,22 @@ pde::ShellData roof_data() {
   return d;
 }
 
+Eigen::SparseMatrix<double> stiffness(const basis::Geometry& g, const quadrature::RuleProvider& rules,
+                                      const pde::ShellMaterial& m);
+
 double roof_midpoint_deflection(int degree, int refine) {
   const basis::Geometry g =
       refine::refine_uniform(basis::bspline::make_cylinder_patch(degree, 25.0, 50.0, -40 * kDeg, 40 * kDeg), refine)
           .geometry;
   const quadrature::Gauss rules(degree + 1);
   const fem::ProblemResult r = fem::solve_problem(g, rules, pde::make_shell(roof_data()));
+  // The strain energy the problem reports is ½ uᵀ K u, K the form's matrix (another path through the same strains).
+  const double energy = 0.5 * r.u.dot(stiffness(g, rules, roof_data().material) * r.u);
+  EXPECT_EQ(r.quantities.at(0).first, "strain energy");
+  EXPECT_NEAR(r.quantities.at(0).second, energy, 1e-9 * energy);
+  EXPECT_NEAR(r.quantities.at(1).second + r.quantities.at(2).second, energy, 1e-9 * energy);
+  EXPECT_GT(r.quantities.at(1).second, 0.0);
+  EXPECT_GT(r.quantities.at(2).second, 0.0);
   const basis::LocatedPoint p =
       basis::locate_point(g, Eigen::Vector3d(25 * std::sin(40 * kDeg), 25.0, 25 * std::cos(40 * kDeg)), "midpoint");
   return pde::shell_displacement(g.space(), r.u, p.element, p.uv)(2);
