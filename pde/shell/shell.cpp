@@ -102,10 +102,6 @@ class Shell final : public fem::Problem {
 };
 
 void Shell::check(const basis::Geometry& geometry) const {
-  if (geometry.dim() != 3) {
-    throw UnsupportedError("shell: the geometry is planar (two coordinates); a shell needs a surface in 3D: give "
-                           "three coordinates (z = 0 for a plate)");
-  }
   smoothness_ = fem::check_c1(geometry, "shell", "the Kirchhoff-Love shell");
   names_ = geometry.space().boundary_part_names();
   const int parts = static_cast<int>(names_.size());
@@ -368,7 +364,8 @@ void Shell::refuse_rigid_modes(const basis::Geometry& geometry, const fem::Diric
     throw InputError("shell: no support: the rigid-body modes (three translations, three rotations) are free; "
                      "support some displacement components on boundary parts");
   }
-  const Eigen::MatrixXd& p = geometry.control_points();
+  Eigen::MatrixXd p = Eigen::MatrixXd::Zero(geometry.control_points().rows(), 3);  // a planar domain: z = 0
+  p.leftCols(geometry.dim()) = geometry.control_points();
   const Index n = p.rows();
   Eigen::MatrixXd modes = Eigen::MatrixXd::Zero(3 * n, 6);
   for (Index i = 0; i < n; ++i) {

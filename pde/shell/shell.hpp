@@ -1,6 +1,6 @@
 #pragma once
 // The linear Kirchhoff–Love shell as a fem::Problem: a displacement of three components over any scalar C1 space on a
-// surface in 3D (the forms: pde/shell/forms.hpp), loads per unit area, pressure, line loads on boundary parts and
+// surface in 3D or a planar domain (a plate) (the forms: pde/shell/forms.hpp), loads per unit area, pressure, line loads on boundary parts and
 // point loads, supports per displacement component on boundary parts (strongly, the L2 projection onto the traces,
 // as elasticity's), free edges elsewhere.
 #include <array>
@@ -65,8 +65,8 @@ struct ShellData {
   std::vector<ShellPointSupport> point_supports;
 };
 
-/// The problem for the pipeline. check() refuses, with one line: a planar geometry (give the surface's three
-/// coordinates, z = 0 for a plate), E ≤ 0, ν outside (−1, 1/2], t ≤ 0, a part that does not exist, a component outside
+/// The problem for the pipeline, on a surface in 3D or a planar domain (a plate in the plane z = 0, its normal
+/// ±e_z as the map's orientation gives it). check() refuses, with one line: a space that is not C1, E ≤ 0, ν outside (−1, 1/2], t ≤ 0, a part that does not exist, a component outside
 /// 0..2 or supported twice, a point load off the surface; constraints() refuses supports that leave a rigid-body mode
 /// free (a translation or a rotation about an axis), naming it.
 std::shared_ptr<const fem::Problem> make_shell(ShellData data);

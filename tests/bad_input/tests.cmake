@@ -1,6 +1,6 @@
 # The hostile-input corpus (tests/bad_input/): every case runs one program on malformed or extreme input and
 # checks its exit code and its one line on stderr (run_corpus.py; cases in tests/bad_input/cases/*.ini).
-set(IGA_CORPUS_PROGRAMS iga-poisson iga-biharmonic iga-elasticity iga-bem iga-quadrature iga-geometry iga-knots iga-fit-quadrature)
+set(IGA_CORPUS_PROGRAMS iga-poisson iga-biharmonic iga-elasticity iga-shell iga-bem iga-quadrature iga-geometry iga-knots iga-fit-quadrature)
 set(corpus_args)
 foreach(p IN LISTS IGA_CORPUS_PROGRAMS)
   list(APPEND corpus_args --exe "${p}=$<TARGET_FILE:${p}>")

@@ -17,10 +17,11 @@ add_test(NAME program_petsc
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_LIST_DIR}/program_petsc.py $<TARGET_FILE:iga-poisson> ${MPIEXEC_EXECUTABLE}
                  ${CMAKE_CURRENT_BINARY_DIR}/program_petsc)
 set_tests_properties(program_petsc PROPERTIES LABELS mpi TIMEOUT 600)
-# iga-biharmonic and iga-elasticity --solver petsc at 2 ranks against CHOLMOD.
+# iga-biharmonic, iga-elasticity and iga-shell --solver petsc at 2 ranks against CHOLMOD.
 add_test(NAME pde_programs_petsc
          COMMAND /usr/bin/python3 ${CMAKE_CURRENT_LIST_DIR}/pde_programs_petsc.py $<TARGET_FILE:iga-biharmonic>
-                 $<TARGET_FILE:iga-elasticity> ${MPIEXEC_EXECUTABLE} ${CMAKE_CURRENT_BINARY_DIR}/pde_programs_petsc)
+                 $<TARGET_FILE:iga-elasticity> ${MPIEXEC_EXECUTABLE} ${CMAKE_CURRENT_BINARY_DIR}/pde_programs_petsc
+                 $<TARGET_FILE:iga-shell>)
 set_tests_properties(pde_programs_petsc PROPERTIES LABELS mpi TIMEOUT 600)
 # Geometric multigrid (--solver mg, fem/multigrid.hpp, PCMG) against CHOLMOD, at 1 rank and under mpirun at 2.
 add_executable(test_multigrid ${CMAKE_CURRENT_LIST_DIR}/test_multigrid.cpp)
