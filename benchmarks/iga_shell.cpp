@@ -71,6 +71,10 @@ int run(Options& o) {
     return pde::make_shell(setup.data);
   };
   o.run.output = [&](const basis::Geometry& geometry, const fem::ProblemResult& r, nlohmann::json& report) {
+    // The shell's warnings (not thin against its curvature or its elements) are in the log; with --quiet, alone.
+    for (const auto& [what, how] : r.choices) {
+      if (o.run.quiet && what.rfind("warning", 0) == 0 && fem::rank() == 0) std::cerr << "iga-shell: " << what << ": " << how << std::endl;
+    }
     report["points"] = point_report(geometry, r.u, setup.points, located, "iga-shell", o.run.quiet);
     if (!write_vtu) return;
     io::VtuOptions out;

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "basis/locate.hpp"
@@ -46,6 +47,58 @@ void check_material(const ShellMaterial& m) {
   if (!(m.thickness > 0.0) || !std::isfinite(m.thickness)) {
     throw InputError("shell: the thickness t must be a finite number > 0, got " + shortest(m.thickness));
   }
+}
+
+// Whether the shell is thin where it is curved and against its elements, from the centre of every element: the smallest
+// radius of curvature R (the principal curvatures: the eigenvalues of the shape operator a^αβ b_βγ) and the smallest
+// element size h (√ of the element's area). Kirchhoff–Love neglects transverse shear, which takes t ≪ R; an element
+// smaller than t resolves what the model leaves out. A warning for t > R/10 and for t > h, else none.
+std::vector<std::pair<std::string, std::string>> thinness(const basis::Geometry& geometry, double t) {
+  const basis::Space& space = geometry.space();
+  double r_min = std::numeric_limits<double>::infinity(), h_min = r_min;
+  Eigen::Vector3d r_at = Eigen::Vector3d::Zero();
+  Index h_element = 0;
+  Eigen::Matrix2Xd centre(2, 1);
+  basis::BasisValues bv;
+  basis::GeometryValues gv;
+  for (Index e = 0; e < space.num_elements(); ++e) {
+    const bool triangle = space.kind(e).shape == basis::Shape::Triangle;
+    centre.col(0) = triangle ? Eigen::Vector2d(1.0 / 3, 1.0 / 3) : Eigen::Vector2d(0.5, 0.5);
+    space.evaluate(e, centre, 2, bv);
+    geometry.evaluate(e, bv, gv, false, 2);
+    const Eigen::Vector3d xu = gv.xu.col(0), xv = gv.xv.col(0), n = xu.cross(xv);
+    const double area = n.norm() * (triangle ? 0.5 : 1.0);
+    if (!(area > 0)) continue;
+    Eigen::Matrix2d g, b;
+    g << xu.dot(xu), xu.dot(xv), xu.dot(xv), xv.dot(xv);
+    b << gv.xuu.col(0).dot(n), gv.xuv.col(0).dot(n), gv.xuv.col(0).dot(n), gv.xvv.col(0).dot(n);
+    b /= n.norm();
+    const Eigen::Vector2cd k = (g.inverse() * b).eigenvalues();
+    const double kmax = std::max(std::abs(k(0)), std::abs(k(1)));
+    if (kmax > 0 && 1 / kmax < r_min) {
+      r_min = 1 / kmax;
+      r_at = gv.x.col(0);
+    }
+    if (std::sqrt(area) < h_min) {
+      h_min = std::sqrt(area);
+      h_element = e;
+    }
+  }
+  std::vector<std::pair<std::string, std::string>> out;
+  std::ostringstream w;
+  if (t > 0.1 * r_min) {
+    w << "the shell is not thin where it is most curved: t = " << t << " against the radius of curvature " << r_min
+      << " at " << point_text(r_at) << " (t/R = " << t / r_min << "; Kirchhoff-Love neglects transverse shear, which "
+      << "takes t/R well below 1/10)";
+    out.emplace_back("curvature", w.str());
+    w.str("");
+  }
+  if (t > h_min) {
+    w << "elements smaller than the thickness: element " << h_element << " has size " << h_min << " < t = " << t
+      << " (a thin-shell model does not resolve the stresses across the thickness that such elements would)";
+    out.emplace_back("element size", w.str());
+  }
+  return out;
 }
 
 class Shell final : public fem::Problem {
@@ -96,6 +149,7 @@ class Shell final : public fem::Problem {
   std::unique_ptr<ShellLoadForm> load_;
   mutable std::vector<std::string> names_;
   mutable std::string smoothness_;
+  mutable std::vector<std::pair<std::string, std::string>> thinness_;  ///< warnings of thinness()
   mutable std::vector<basis::BoundaryEdge> edges_;
   mutable std::vector<basis::LocatedPoint> points_;    ///< of d_.point_loads, by check()
   mutable std::vector<basis::LocatedPoint> supports_;  ///< of d_.point_supports, by check()
@@ -103,6 +157,7 @@ class Shell final : public fem::Problem {
 
 void Shell::check(const basis::Geometry& geometry) const {
   smoothness_ = fem::check_c1(geometry, "shell", "the Kirchhoff-Love shell");
+  thinness_ = thinness(geometry, d_.material.thickness);
   names_ = geometry.space().boundary_part_names();
   const int parts = static_cast<int>(names_.size());
   auto check_parts = [&](const std::vector<int>& list, const std::string& what) {
@@ -159,6 +214,7 @@ void Shell::add_boundary_terms(const fem::Assembler& assembler, fem::LinearSyste
                                        ", t = " + shortest(m.thickness));
   choices.emplace_back("formulation", "Kirchhoff-Love, membrane + bending (Kiendl et al. 2009)");
   choices.emplace_back("smoothness", smoothness_);
+  for (const auto& [what, w] : thinness_) choices.emplace_back("warning (" + what + ")", w);
   const Eigen::SparseMatrix<double> none;
   for (const ShellLineLoad& l : d_.line_loads) {
     const ShellLineLoadForm form(l.load);
