@@ -31,6 +31,7 @@
 #include "mesh/three_valent.hpp"
 #include "pde/biharmonic/forms.hpp"
 #include "pde/elasticity/forms.hpp"
+#include "pde/shell/forms.hpp"
 #include "quadrature/rule_provider.hpp"
 #include "refine/uniform.hpp"
 
@@ -62,6 +63,15 @@ Case make_case(const std::string& name) {
   if (name == "nurbs3") {
     o.degree = 3;
     return build("bspline", nullptr, 6, "");
+  }
+  if (name == "roof3") {  // a surface: the Scordelis-Lo roof, a NURBS cylinder patch in 3D
+    o.degree = 3;
+    o.geometry = "scordelis-lo-roof";
+    return build("bspline", nullptr, 6, "");
+  }
+  if (name == "cc_torus") {  // a closed Catmull-Clark surface with EVs of valence 3 and 5
+    const mesh::PolyMesh net = mesh::read_obj(data("torus_evs.obj"));
+    return build("cc", &net, 3, "tiles:4:8");
   }
   if (name == "bspline5") {
     o.degree = 5;
@@ -188,12 +198,16 @@ void pde_kernel(benchmark::State& state, const std::string& name, const std::str
   const fem::StiffnessForm stiffness;
   const pde::BiharmonicForm biharmonic;
   const pde::ElasticityForm elasticity(pde::lame(1.0, 0.3, pde::PlaneModel::kStrain));
+  const pde::KirchhoffLoveForm shell({1.0, 0.3, 0.01});
+  const pde::ShellLoadForm area({nullptr, nullptr, f}, nullptr);
   const fem::SourceForm load(f);
   const pde::BodyForceForm body({f, f});
   const fem::BilinearForm* a = pde == "poisson" ? static_cast<const fem::BilinearForm*>(&stiffness)
                                : pde == "biharmonic" ? static_cast<const fem::BilinearForm*>(&biharmonic)
+                               : pde == "shell"      ? static_cast<const fem::BilinearForm*>(&shell)
                                                      : static_cast<const fem::BilinearForm*>(&elasticity);
   const fem::LinearForm* l = pde == "elasticity" ? static_cast<const fem::LinearForm*>(&body)
+                             : pde == "shell"    ? static_cast<const fem::LinearForm*>(&area)
                                                  : static_cast<const fem::LinearForm*>(&load);
   const fem::Assembler assembler(c.geometry, *c.rules, a->components());
   const int derivatives = std::max(a->derivatives(), l->derivatives());
@@ -227,6 +241,10 @@ BENCHMARK_CAPTURE(pde_kernel, bspline3_elasticity, std::string("bspline3"), std:
 BENCHMARK_CAPTURE(pde_kernel, nurbs3_poisson, std::string("nurbs3"), std::string("poisson"));
 BENCHMARK_CAPTURE(pde_kernel, nurbs3_biharmonic, std::string("nurbs3"), std::string("biharmonic"));
 BENCHMARK_CAPTURE(pde_kernel, nurbs3_elasticity, std::string("nurbs3"), std::string("elasticity"));
+BENCHMARK_CAPTURE(pde_kernel, roof3_poisson, std::string("roof3"), std::string("poisson"));
+BENCHMARK_CAPTURE(pde_kernel, roof3_shell, std::string("roof3"), std::string("shell"));
+BENCHMARK_CAPTURE(pde_kernel, cc_torus_poisson, std::string("cc_torus"), std::string("poisson"));
+BENCHMARK_CAPTURE(pde_kernel, cc_torus_shell, std::string("cc_torus"), std::string("shell"));
 BENCHMARK_CAPTURE(element_kernel, bspline3, std::string("bspline3"));
 BENCHMARK_CAPTURE(element_kernel, bspline5, std::string("bspline5"));
 BENCHMARK_CAPTURE(element_kernel, nurbs3, std::string("nurbs3"));

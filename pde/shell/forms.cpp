@@ -71,7 +71,11 @@ void KirchhoffLoveForm::add(const fem::ElementContext& ctx, Eigen::MatrixXd& loc
       }
     }
   }
-  local.noalias() += s.transpose() * s;
+  // SᵀS is symmetric: its lower triangle by a rank update (half the products of a full one), then both halves.
+  thread_local Eigen::MatrixXd k;
+  k.setZero(3 * n, 3 * n);
+  k.selfadjointView<Eigen::Lower>().rankUpdate(s.transpose());
+  local += k.selfadjointView<Eigen::Lower>();
 }
 
 std::vector<const fem::Function*> ShellLoadForm::data() const {
