@@ -99,13 +99,7 @@ int main(int argc, char** argv) {
   app.add_option("--vtu-degree", o.vtu_degree, "--vtu-format bezier: degree of the cells of elements that are not polynomial")
       ->check(iga::io::whole_number(1, 16))->capture_default_str();
   app.add_option("--json", o.json, "JSON report file ('-': standard output, 'none' to skip)")->capture_default_str();
-  iga::io::CommonOptions common{"iga-biharmonic"};
-  iga::io::add_common_options(app, common);
-  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
-  if (const auto code = iga::io::check_option_rules(app, common.program)) return *code;
-  o.run.quiet = common.quiet;
-  o.run.run_info = iga::io::run_info(app, common.program);
-  iga::io::record_given_options(app, o.run.discretisation);
+  if (const auto code = iga::io::parse_problem_program(app, argc, argv, o.run)) return *code;
   return iga::io::run_solver_program("iga-biharmonic", iga::io::solver_uses_petsc(o.run.solver, o.run.discretisation.basis), argv, o.run.quiet, o.run.threads,
                                      [&] { return run(o); });
 }

@@ -140,22 +140,10 @@ int main(int argc, char** argv) {
   app.add_option("--adaptive", o.adaptive, "not for shells yet (no error estimator): refused with a message")
       ->check(iga::io::whole_number(0, 200));
   iga::io::add_solver_options(app, o.run);
-  app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip): displacement, membrane_forces and "
-                 "bending_moments (per unit length, XX, YY, ZZ, XY, YZ, XZ), von_mises_top_bottom")
-      ->capture_default_str();
-  app.add_option("--vtu-format", o.vtu_format, "linear (--vtu-samples linear cells per element); the Bézier output of "
-                 "vector and tensor fields is not written yet")
-      ->check(CLI::IsMember({"linear"}))->capture_default_str();
-  app.add_option("--vtu-samples", o.samples, "sample points per direction per element")->check(iga::io::whole_number(2, 64))
-      ->capture_default_str();
-  app.add_option("--json", o.json, "JSON report file ('-': standard output, 'none' to skip)")->capture_default_str();
-  iga::io::CommonOptions common{"iga-shell"};
-  iga::io::add_common_options(app, common);
-  if (const auto code = iga::io::parse_command_line(app, argc, argv, common)) return *code;
-  if (const auto code = iga::io::check_option_rules(app, common.program)) return *code;
-  o.run.quiet = common.quiet;
-  o.run.run_info = iga::io::run_info(app, common.program);
-  iga::io::record_given_options(app, o.run.discretisation);
+  iga::io::add_linear_output_options(app, o.vtu, o.vtu_format, o.samples, o.json,
+                                     "displacement, membrane_forces and bending_moments (per unit length, XX, YY, ZZ, "
+                                     "XY, YZ, XZ), von_mises_top_bottom");
+  if (const auto code = iga::io::parse_problem_program(app, argc, argv, o.run)) return *code;
   // Without loads, the default problem; a problem without --mesh and --geometry is posed on its own surface.
   const iga::pde::ShellInput& in = o.input;
   if (in.problem.empty() && in.area_load.empty() && in.pressure.empty() && in.line_load.empty() && in.point_load.empty()) {

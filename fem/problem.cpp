@@ -122,6 +122,32 @@ void ProblemSolver::errors() {
   done_ = 4;
 }
 
+std::vector<basis::BoundaryEdge> edges_on(const std::vector<basis::BoundaryEdge>& edges, const std::vector<int>& parts) {
+  std::vector<basis::BoundaryEdge> out;
+  for (const basis::BoundaryEdge& e : edges) {
+    if (std::find(parts.begin(), parts.end(), e.part) != parts.end()) out.push_back(e);
+  }
+  return out;
+}
+
+std::string part_names(const std::vector<int>& parts, const std::vector<std::string>& names) {
+  std::string out;
+  for (int p : parts) out += (out.empty() ? "" : ", ") + names[static_cast<std::size_t>(p)];
+  return out;
+}
+
+std::vector<std::string> item_fields(const std::string& text, char separator) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, separator)) {
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    out.push_back(item);
+  }
+  return out;
+}
+
 std::vector<int> parse_boundary_parts(const std::string& list, const std::vector<std::string>& names,
                                       const std::string& what) {
   std::vector<int> parts;

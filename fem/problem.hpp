@@ -75,6 +75,13 @@ class Problem {
 std::vector<int> parse_boundary_parts(const std::string& list, const std::vector<std::string>& names,
                                       const std::string& what);
 
+/// The boundary edges of `edges` on the parts `parts` (Space::boundary_part_names() indices), in order.
+std::vector<basis::BoundaryEdge> edges_on(const std::vector<basis::BoundaryEdge>& edges, const std::vector<int>& parts);
+/// The parts by name, comma-separated ("v0, u1"): what a problem reports of a condition.
+std::string part_names(const std::vector<int>& parts, const std::vector<std::string>& names);
+/// A condition item's fields: the text split at `separator`, each trimmed of blanks ("x; v0 ; 0" → x, v0, 0).
+std::vector<std::string> item_fields(const std::string& text, char separator = ';');
+
 /// f(only) on each process for its own elements (LinearSystem::run_everywhere: a failure anywhere fails all),
 /// summed over the processes.
 Eigen::VectorXd summed_squares(const LinearSystem& system,

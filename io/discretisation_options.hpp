@@ -4,11 +4,13 @@
 // --cc-corners, --grade-evs, --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "io/discretisation.hpp"
 #include "io/problem_run.hpp"
+#include "io/option_rules.hpp"
 #include "io/program.hpp"
 
 namespace iga::io {
@@ -100,6 +102,33 @@ inline void add_solver_options(CLI::App& app, ProblemProgram& run) {
                  "GiB this run may use (default: what the system has available); a run predicted to need more is refused "
                  "before it starts")
       ->check(finite_number(0.001, 1e6));
+}
+
+/// --vtu, --vtu-format (linear only), --vtu-samples and --json of a PDE program whose .vtu fields are vectors and
+/// tensors (`fields`: what --vtu's help lists).
+inline void add_linear_output_options(CLI::App& app, std::string& vtu, std::string& vtu_format, int& samples,
+                                      std::string& json, const std::string& fields) {
+  app.add_option("--vtu", vtu, "ParaView output file ('none' to skip): " + fields)->capture_default_str();
+  app.add_option("--vtu-format", vtu_format, "linear (--vtu-samples linear cells per element); the Bézier output of "
+                 "vector and tensor fields is not written yet")
+      ->check(CLI::IsMember({"linear"}))->capture_default_str();
+  app.add_option("--vtu-samples", samples, "sample points per direction per element")->check(whole_number(2, 64))
+      ->capture_default_str();
+  app.add_option("--json", json, "JSON report file ('-': standard output, 'none' to skip)")->capture_default_str();
+}
+
+/// The rest of a PDE program's command line after its own options: the common options, parsing (a --config file
+/// included), the option rules, then --quiet, the report's run_info and the discretisation options given into `run`.
+/// A value when the program must exit with it (--help, --version, a usage error: already reported).
+inline std::optional<int> parse_problem_program(CLI::App& app, int argc, char** argv, ProblemProgram& run) {
+  CommonOptions common{run.program};
+  add_common_options(app, common);
+  if (const auto code = parse_command_line(app, argc, argv, common)) return code;
+  if (const auto code = check_option_rules(app, common.program)) return code;
+  run.quiet = common.quiet;
+  run.run_info = iga::io::run_info(app, common.program);
+  record_given_options(app, run.discretisation);
+  return std::nullopt;
 }
 
 }  // namespace iga::io

@@ -42,12 +42,6 @@ class Traction final : public fem::BoundaryFunction {
   int c_;
 };
 
-std::string part_list(const std::vector<int>& parts, const std::vector<std::string>& names) {
-  std::string out;
-  for (int p : parts) out += (out.empty() ? "" : ", ") + names[static_cast<std::size_t>(p)];
-  return out;
-}
-
 class Elasticity final : public fem::Problem {
  public:
   explicit Elasticity(ElasticityData data) : d_(std::move(data)) {
@@ -105,7 +99,7 @@ class Elasticity final : public fem::Problem {
       Eigen::VectorXd b;
       assembler.assemble_boundary(on(t.parts), nullptr, &form, nullptr, &b);
       system.add(none, b);
-      choices.emplace_back("traction", part_list(t.parts, names_));
+      choices.emplace_back("traction", fem::part_names(t.parts, names_));
     }
   }
 
@@ -118,7 +112,7 @@ class Elasticity final : public fem::Problem {
           fem::project_dirichlet(scalar, on(c.parts), c.value ? c.value : fem::constant_function(0.0));
       sets.push_back(fem::component_conditions(s, c.component, 2));
       choices.emplace_back(std::string("displacement u_") + (c.component ? "y" : "x"),
-                           part_list(c.parts, names_) + ": strong (L2 projection)");
+                           fem::part_names(c.parts, names_) + ": strong (L2 projection)");
     }
     fem::DirichletConditions bc = fem::merge_conditions(sets, assembler.num_dofs());
     refuse_rigid_modes(assembler.geometry(), bc);
@@ -141,13 +135,7 @@ class Elasticity final : public fem::Problem {
   }
 
  private:
-  std::vector<basis::BoundaryEdge> on(const std::vector<int>& parts) const {
-    std::vector<basis::BoundaryEdge> out;
-    for (const basis::BoundaryEdge& e : edges_) {
-      if (std::find(parts.begin(), parts.end(), e.part) != parts.end()) out.push_back(e);
-    }
-    return out;
-  }
+  std::vector<basis::BoundaryEdge> on(const std::vector<int>& parts) const { return fem::edges_on(edges_, parts); }
   void refuse_rigid_modes(const basis::Geometry& geometry, const fem::DirichletConditions& bc) const;
   Eigen::VectorXd squares(const fem::Assembler& by, const Eigen::VectorXd& u, const std::vector<char>* only) const;
 

@@ -11,23 +11,10 @@ namespace iga::pde {
 
 namespace {
 
-// "a; b ; c" → {"a", "b", "c"}, each trimmed.
-std::vector<std::string> fields(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ';')) {
-    item.erase(0, item.find_first_not_of(" \t"));
-    item.erase(item.find_last_not_of(" \t") + 1);
-    out.push_back(item);
-  }
-  return out;
-}
-
 // "BX; BY" → two expressions named "<what> x" and "<what> y".
 std::array<std::shared_ptr<const fem::Function>, 2> pair_of(const std::string& text, const std::string& what,
                                                             const std::string& form, double fd_step) {
-  const std::vector<std::string> f = fields(text);
+  const std::vector<std::string> f = fem::item_fields(text);
   if (f.size() != 2 || f[0].empty() || f[1].empty()) {
     throw InputError(what + " '" + text + "': expected " + form + " (two expressions separated by ';')");
   }
@@ -95,7 +82,7 @@ void add_conditions(const std::vector<std::string>& displacement, const std::vec
                     const std::vector<std::string>& names, Lame material, ElasticityData& data, nlohmann::json& conditions) {
   conditions = nlohmann::json::array();
   for (const std::string& item : displacement) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     if (f.size() < 2 || f.size() > 3 || (f[0] != "x" && f[0] != "y")) {
       throw InputError("--displacement '" + item + "': expected C; PARTS[; VALUE] with C x or y (e.g. 'x; v1' or 'y; v0; 0.01*x')");
     }
@@ -112,7 +99,7 @@ void add_conditions(const std::vector<std::string>& displacement, const std::vec
                           {"value", f.size() == 3 ? f[2] : (data.exact[0] ? "the exact solution's" : "0")}});
   }
   for (const std::string& item : traction) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     if (f.size() != 1 && f.size() != 3) throw InputError("--traction '" + item + "': expected PARTS[; TX; TY] (e.g. 'u1; 10; 0')");
     TractionCondition t;
     t.parts = fem::parse_boundary_parts(f[0], names, "--traction '" + item + "'");

@@ -12,19 +12,6 @@ namespace iga::pde {
 
 namespace {
 
-// "a; b ; c" → {"a", "b", "c"}, each trimmed.
-std::vector<std::string> fields(const std::string& text, char separator = ';') {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, separator)) {
-    item.erase(0, item.find_first_not_of(" \t"));
-    item.erase(item.find_last_not_of(" \t") + 1);
-    out.push_back(item);
-  }
-  return out;
-}
-
 int component_of(const std::string& c, const std::string& what) {
   if (c == "x") return 0;
   if (c == "y") return 1;
@@ -34,7 +21,7 @@ int component_of(const std::string& c, const std::string& what) {
 
 // "X, Y, Z" → a point, each a finite number.
 Eigen::Vector3d vector_of(const std::string& text, const std::string& what) {
-  const std::vector<std::string> f = fields(text, ',');
+  const std::vector<std::string> f = fem::item_fields(text, ',');
   Eigen::Vector3d out;
   bool ok = f.size() == 3;
   for (std::size_t i = 0; ok && i < 3; ++i) {
@@ -52,7 +39,7 @@ Eigen::Vector3d vector_of(const std::string& text, const std::string& what) {
 
 std::array<std::shared_ptr<const fem::Function>, 3> triple_of(const std::string& text, const std::string& what,
                                                               double fd_step) {
-  const std::vector<std::string> f = fields(text);
+  const std::vector<std::string> f = fem::item_fields(text);
   if (f.size() != 3 || f[0].empty() || f[1].empty() || f[2].empty()) {
     throw InputError(what + " '" + text + "': expected FX; FY; FZ (three expressions separated by ';')");
   }
@@ -157,7 +144,7 @@ ShellSetUp shell_setup(const ShellInput& given, const basis::Geometry& geometry,
   if (!in.area_load.empty()) loads.push_back({{"area load", in.area_load}});
   if (!in.pressure.empty()) loads.push_back({{"pressure", in.pressure}});
   for (const std::string& item : in.line_load) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     if (f.size() != 4) throw InputError("--line-load '" + item + "': expected PARTS; QX; QY; QZ (e.g. 'u1; 0; 0; -2')");
     ShellLineLoad l;
     l.parts = fem::parse_boundary_parts(f[0], names, "--line-load '" + item + "'");
@@ -169,7 +156,7 @@ ShellSetUp shell_setup(const ShellInput& given, const basis::Geometry& geometry,
     loads.push_back({{"line load", f[1] + "; " + f[2] + "; " + f[3]}, {"parts", f[0]}});
   }
   for (const std::string& item : in.point_load) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     if (f.size() != 2) throw InputError("--point-load '" + item + "': expected X, Y, Z; FX, FY, FZ");
     s.data.point_loads.push_back({vector_of(f[0], "--point-load '" + item + "'"), vector_of(f[1], "--point-load '" + item + "'")});
     loads.push_back({{"point load", f[1]}, {"at", f[0]}});
@@ -201,7 +188,7 @@ namespace {
 
 void add_supports(const ShellInput& in, const std::vector<std::string>& names, ShellData& data, nlohmann::json& out) {
   for (const std::string& item : in.support) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     const std::string what = "--support '" + item + "'";
     if (f.size() < 2 || f.size() > 3) throw InputError(what + ": expected C; PARTS[; value|slope|value+slope]");
     ShellSupport s;
@@ -221,7 +208,7 @@ void add_supports(const ShellInput& in, const std::vector<std::string>& names, S
     out.push_back({{"support", f[0]}, {"parts", f[1]}, {"holds", hold}});
   }
   for (const std::string& item : in.symmetry) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     const std::string what = "--symmetry '" + item + "'";
     if (f.size() != 2) throw InputError(what + ": expected AXIS; PARTS (the plane normal to AXIS, e.g. 'x; u0')");
     const int c = component_of(f[0], what);
@@ -239,7 +226,7 @@ void add_supports(const ShellInput& in, const std::vector<std::string>& names, S
     out.push_back({{"clamped", item}});
   }
   for (const std::string& item : in.point_support) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     const std::string what = "--point-support '" + item + "'";
     if (f.size() != 2) throw InputError(what + ": expected X, Y, Z; C");
     data.point_supports.push_back({vector_of(f[0], what), component_of(f[1], what)});
@@ -249,7 +236,7 @@ void add_supports(const ShellInput& in, const std::vector<std::string>& names, S
 
 void add_points(const ShellInput& in, ShellSetUp& s, nlohmann::json& out) {
   for (const std::string& item : in.point) {
-    const std::vector<std::string> f = fields(item);
+    const std::vector<std::string> f = fem::item_fields(item);
     if (f.size() != 2 || f[0].empty()) throw InputError("--point '" + item + "': expected NAME; X, Y, Z");
     s.points.push_back({f[0], vector_of(f[1], "--point '" + item + "'"), -1, 0.0, ""});
   }

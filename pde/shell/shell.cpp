@@ -23,12 +23,6 @@ std::string shortest(double v) {
   return out.str();
 }
 
-std::string part_list(const std::vector<int>& parts, const std::vector<std::string>& names) {
-  std::string out;
-  for (int p : parts) out += (out.empty() ? "" : ", ") + names[static_cast<std::size_t>(p)];
-  return out;
-}
-
 std::string point_text(const Eigen::Vector3d& x) {
   std::ostringstream out;
   out << "(" << x(0) << ", " << x(1) << ", " << x(2) << ")";
@@ -130,13 +124,7 @@ class Shell final : public fem::Problem {
   }
 
  private:
-  std::vector<basis::BoundaryEdge> on(const std::vector<int>& parts) const {
-    std::vector<basis::BoundaryEdge> out;
-    for (const basis::BoundaryEdge& e : edges_) {
-      if (std::find(parts.begin(), parts.end(), e.part) != parts.end()) out.push_back(e);
-    }
-    return out;
-  }
+  std::vector<basis::BoundaryEdge> on(const std::vector<int>& parts) const { return fem::edges_on(edges_, parts); }
   void refuse_rigid_modes(const basis::Geometry& geometry, const fem::DirichletConditions& bc) const;
   void add_slope_equations(const fem::Assembler& scalar, const std::vector<int>& parts,
                            std::vector<Eigen::Triplet<double>>& rows, std::vector<Index>& prefer) const;
@@ -221,7 +209,7 @@ void Shell::add_boundary_terms(const fem::Assembler& assembler, fem::LinearSyste
     Eigen::VectorXd b;
     assembler.assemble_boundary(on(l.parts), nullptr, &form, nullptr, &b);
     system.add(none, b);
-    choices.emplace_back("line load", part_list(l.parts, names_));
+    choices.emplace_back("line load", fem::part_names(l.parts, names_));
   }
   if (d_.point_loads.empty()) return;
   const basis::Space& space = assembler.geometry().space();
@@ -260,7 +248,7 @@ fem::DirichletConditions Shell::constraints(const fem::Assembler& assembler, fem
       const char* how = s.hold == Hold::kValue ? ": value, strong (L2 projection)"
                         : s.hold == Hold::kSlope ? ": slope"
                                                  : ": value and slope";
-      choices.emplace_back(std::string("support u_") + axis(c), part_list(s.parts, names_) + how);
+      choices.emplace_back(std::string("support u_") + axis(c), fem::part_names(s.parts, names_) + how);
     }
     if (held.empty() && slopes.empty()) continue;
     fem::DirichletConditions values = held.size() == 1 ? held[0] : zero_union(held, c);
