@@ -104,7 +104,8 @@ void add_shell_options(CLI::App& app, iga::pde::ShellInput& in) {
   app.add_option("--thickness", in.thickness, "the shell's thickness t > 0 (default: the --problem's)")->check(finite);
   app.add_option("--problem", in.problem,
                  "the shell obstacle course (README): scordelis-lo-roof (default without loads), pinched-cylinder, "
-                 "pinched-hemisphere, on the built-in geometries of the same names; items given besides are added")
+                 "pinched-hemisphere, on the built-in geometries of the same names; items given besides are added (an "
+                 "--area-load replaces its own), and the reference values are then not reported")
       ->check(CLI::IsMember(iga::pde::shell_problem_names()));
   app.add_option("--area-load", in.area_load, "load per unit area 'FX; FY; FZ' (expressions in x, y, z)")
       ->check(iga::io::non_blank());

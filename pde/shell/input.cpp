@@ -122,6 +122,12 @@ ShellSetUp shell_setup(const ShellInput& given, const basis::Geometry& geometry,
   ShellSetUp s;
   if (!in.problem.empty()) {
     const Builtin b = builtin(in.problem);
+    // The reference values hold for the problem as set: not when the material, a load or a support is changed (the
+    // geometry may be another discretisation of the same surface: a net of the roof).
+    const auto same = [](double given, double own) { return std::isnan(given) || given == own; };
+    const bool as_set = same(in.young, b.young) && same(in.poisson, b.poisson) && same(in.thickness, b.thickness) &&
+                        in.area_load.empty() && in.pressure.empty() && in.line_load.empty() && in.support.empty() &&
+                        in.symmetry.empty() && in.clamped.empty() && in.point_load.empty() && in.point_support.empty();
     if (std::isnan(in.young)) in.young = b.young;
     if (std::isnan(in.poisson)) in.poisson = b.poisson;
     if (std::isnan(in.thickness)) in.thickness = b.thickness;
@@ -131,6 +137,9 @@ ShellSetUp shell_setup(const ShellInput& given, const basis::Geometry& geometry,
     in.point_support.insert(in.point_support.begin(), b.items.point_support.begin(), b.items.point_support.end());
     append(in.point_load, b.items.point_load);
     s.points = b.points;
+    if (!as_set) {
+      for (ShellPoint& p : s.points) p.component = -1;  // reported without the reference
+    }
   }
   if (std::isnan(in.poisson)) in.poisson = 0.3;
   if (std::isnan(in.young)) throw InputError("--young: Young's modulus is needed (no --problem gives it)");

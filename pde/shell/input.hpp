@@ -18,7 +18,8 @@ struct ShellInput {
          thickness = std::numeric_limits<double>::quiet_NaN();
   /// --problem: scordelis-lo-roof, pinched-cylinder or pinched-hemisphere (the set-ups of the README's shell obstacle
   /// course, on the built-in geometries of the same names), or empty: the items below. Items given with a problem
-  /// are added to its own.
+  /// are added to its own (an --area-load replaces its own), and its reference values are then not reported: they hold
+  /// for the problem as set (its material, loads and supports; any discretisation of its surface).
   std::string problem;
   std::string area_load;                    ///< "FX; FY; FZ" per unit area (expressions in x, y, z)
   std::string pressure;                     ///< along the unit normal (an expression)

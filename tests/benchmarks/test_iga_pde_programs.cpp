@@ -237,13 +237,16 @@ TEST_F(PdePrograms, ShellObstacleCourse) {
 // A shell that is not thin is solved with two warnings, also under --quiet: t = 3 against the roof's radius 25 (t/R
 // 0.12 > 1/10) and against its smallest element (16 × 16 on the 50 × 35 roof: 2.5 < 3); the default t = 0.25 none.
 TEST_F(PdePrograms, ShellWarnsWhenNotThin) {
-  const Outcome thick = run(IGA_SHELL_EXE, "--thickness 3 --quiet --vtu none --json none");
+  const Outcome thick = run(IGA_SHELL_EXE, "--thickness 3 --quiet --vtu none --json thick.json");
   EXPECT_EQ(thick.code, 0) << thick.err;
   EXPECT_EQ(std::count(thick.err.begin(), thick.err.end(), '\n'), 2) << thick.err;
   EXPECT_NE(thick.err.find("iga-shell: warning (curvature): the shell is not thin where it is most curved: t = 3 against "
                            "the radius of curvature 25 at"), std::string::npos) << thick.err;
   EXPECT_NE(thick.err.find("iga-shell: warning (element size): elements smaller than the thickness"), std::string::npos)
       << thick.err;
+  // The roof's reference (0.3006 for t = 0.25) is not reported for another thickness.
+  const nlohmann::json j = report("thick.json");
+  EXPECT_FALSE(j["points"].at(0).contains("reference")) << j["points"];
   const Outcome thin = run(IGA_SHELL_EXE, "--quiet --vtu none --json none");
   EXPECT_EQ(thin.code, 0) << thin.err;
   EXPECT_EQ(thin.err, "");
