@@ -75,7 +75,7 @@ export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:report_error_type=1"
 
 corpus="env ASAN_OPTIONS=$ASAN_OPTIONS:max_allocation_size_mb=8192 /usr/bin/python3 $root/tests/bad_input/run_corpus.py --memory-limit-mb 100000000"
-for p in benchmarks/iga-poisson benchmarks/iga-biharmonic benchmarks/iga-elasticity benchmarks/iga-bem benchmarks/iga-quadrature tools/iga-geometry tools/iga-knots \
+for p in benchmarks/iga-poisson benchmarks/iga-biharmonic benchmarks/iga-elasticity benchmarks/iga-shell benchmarks/iga-bem benchmarks/iga-quadrature tools/iga-geometry tools/iga-knots \
          tools/iga-fit-quadrature; do
   corpus+=" --exe $(basename "$p")=$build/$p"
 done
