@@ -80,17 +80,19 @@ void follow_coarse_side(const HangingSide& h, const std::vector<const BezierLayo
   CellControl& fine = control[static_cast<std::size_t>(h.fine)];
   const std::vector<int> cs = cl.side_points(h.coarse_side), fs = fl.side_points(h.fine_side);
   const bool with_u = coarse.u.size() > 0, with_exact = coarse.exact.size() > 0;
-  // Columns: x (3), u, exact.
-  Eigen::MatrixXd curve(static_cast<Eigen::Index>(cs.size()), 5);
+  const Eigen::Index nf = coarse.fields.cols();
+  // Columns: x (3), u, exact, the fields.
+  Eigen::MatrixXd curve(static_cast<Eigen::Index>(cs.size()), 5 + nf);
   curve.setZero();
   for (std::size_t k = 0; k < cs.size(); ++k) {
     const auto r = static_cast<Eigen::Index>(k);
     curve.block(r, 0, 1, 3) = coarse.x.row(cs[k]);
     if (with_u) curve(r, 3) = coarse.u(cs[k]);
     if (with_exact) curve(r, 4) = coarse.exact(cs[k]);
+    if (nf > 0) curve.block(r, 5, 1, nf) = coarse.fields.row(cs[k]);
   }
   const auto n = static_cast<Eigen::Index>(fs.size());
-  Eigen::MatrixXd values(n, 5);
+  Eigen::MatrixXd values(n, 5 + nf);
   for (Eigen::Index k = 0; k < n; ++k) {
     const double tau = static_cast<double>(k) / static_cast<double>(n - 1);
     values.row(k) = de_casteljau(curve, h.a + tau * (h.b - h.a));
@@ -101,6 +103,7 @@ void follow_coarse_side(const HangingSide& h, const std::vector<const BezierLayo
     fine.x.row(p) = points.block(k, 0, 1, 3);
     if (with_u) fine.u(p) = points(k, 3);
     if (with_exact) fine.exact(p) = points(k, 4);
+    if (nf > 0) fine.fields.row(p) = points.block(k, 5, 1, nf);
   }
 }
 

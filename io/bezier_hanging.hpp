@@ -13,10 +13,11 @@
 namespace iga::io {
 
 /// Control points of one cell before merging, rows in its layout's point order: x (n × 3), u and exact (n; empty
-/// when not written).
+/// when not written), fields (n × the components of all sampled fields; empty without).
 struct CellControl {
   Eigen::MatrixXd x;
   Eigen::VectorXd u, exact;
+  Eigen::MatrixXd fields;
   Eigen::VectorXd weights;  ///< rational weights of the points (NURBS elements); empty for polynomial cells
 };
 
@@ -33,7 +34,7 @@ struct HangingSide {
 std::vector<HangingSide> hanging_sides(const basis::Space& space, std::vector<int>& degree);
 
 /// Replaces the control points of side h.fine_side of the fine cell by the coarse cell's side curve on [a, b]
-/// (x, u and exact alike). layout[e] is the layout of cell e (the fine one's degree >= the coarse one's).
+/// (x, u, exact and the fields alike). layout[e] is the layout of cell e (the fine one's degree >= the coarse one's).
 void follow_coarse_side(const HangingSide& h, const std::vector<const BezierLayout*>& layout,
                         std::vector<CellControl>& control);
 

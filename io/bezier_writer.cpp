@@ -94,10 +94,42 @@ std::pair<Eigen::Vector3d, double> merge_frame(const basis::Geometry& geometry, 
   return {lo - Eigen::Vector3d::Constant(2.0 * tol), tol};
 }
 
+/// The sampled fields at the nodes (at field_points, vtu_writer.hpp): nodes × their components, in order.
+Eigen::MatrixXd field_values(Index e, const basis::Geometry& geometry, const Eigen::Matrix2Xd& nodes,
+                             const std::vector<SampledField>& fields) {
+  Eigen::Index components = 0;
+  for (const SampledField& f : fields) components += f.components;
+  Eigen::MatrixXd out(nodes.cols(), components);
+  // What the fields read, by derivatives asked for (1 or 2): evaluated once each, where field_points says.
+  basis::BasisValues bv[2];
+  basis::GeometryValues gv[2];
+  bool evaluated[2] = {false, false};
+  Eigen::MatrixXd values;
+  Eigen::Index column = 0;
+  for (const SampledField& f : fields) {
+    const int d = std::clamp(f.derivatives, 1, 2), i = d - 1;
+    if (!evaluated[i]) {
+      geometry.space().evaluate(e, field_points(geometry.space(), e, nodes, d), d, bv[i]);
+      geometry.evaluate(e, bv[i], gv[i], /*check=*/false, d);
+      evaluated[i] = true;
+    }
+    f.values(e, bv[i], gv[i], values);
+    if (values.rows() != f.components || values.cols() != out.rows()) {
+      throw Error("Bézier output: field '" + f.name + "' gave " + std::to_string(values.rows()) + " × " +
+                  std::to_string(values.cols()) + " values for " + std::to_string(f.components) + " × " +
+                  std::to_string(out.rows()));
+    }
+    out.middleCols(column, f.components) = values.transpose();
+    column += f.components;
+  }
+  return out;
+}
+
 /// Control points of element e (CellControl, bezier_hanging.hpp) in the layout's order.
-void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorXd* u, const fem::Function* exact,
+void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorXd* u, const BezierOptions& options,
                   const BezierLayout& layout, CellControl& out) {
   const basis::Space& space = geometry.space();
+  const fem::Function* exact = options.exact.get();
   basis::BasisValues bv;
   space.evaluate(e, layout.nodes, 0, bv);
   const auto dofs = space.dofs(e);
@@ -113,6 +145,7 @@ void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorX
   Eigen::VectorXd u_nodes = u != nullptr ? Eigen::VectorXd(bv.value.transpose() * local_u) : Eigen::VectorXd();
   Eigen::VectorXd exact_nodes;
   if (exact != nullptr) exact->values(x_nodes.transpose(), exact_nodes);
+  Eigen::MatrixXd field_nodes = field_values(e, geometry, layout.nodes, options.fields);  // nodes × components
   // A NURBS element: W = Σ w_j N_j is 1 / Σ_i R_i / w_i at the nodes (since Σ N_i = 1), and W, W x, W u are
   // polynomials of the cell's degree: their Bernstein coefficients are the weights and the weighted points.
   const std::optional<basis::RationalForm> rational = space.rational_form(e);
@@ -122,6 +155,7 @@ void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorX
     x_nodes = w_nodes.asDiagonal() * x_nodes;
     if (u != nullptr) u_nodes = w_nodes.cwiseProduct(u_nodes);
     if (exact != nullptr) exact_nodes = w_nodes.cwiseProduct(exact_nodes);
+    field_nodes = w_nodes.asDiagonal() * field_nodes;
     out.weights = layout.collocation.solve(w_nodes);
   } else {
     out.weights.resize(0);
@@ -133,6 +167,8 @@ void cell_control(Index e, const basis::Geometry& geometry, const Eigen::VectorX
   if (u != nullptr && rational) out.u = inv.cwiseProduct(out.u);
   if (exact != nullptr) out.exact = layout.collocation.solve(exact_nodes);
   if (exact != nullptr && rational) out.exact = inv.cwiseProduct(out.exact);
+  out.fields = field_nodes.cols() > 0 ? Eigen::MatrixXd(layout.collocation.solve(field_nodes)) : Eigen::MatrixXd();
+  if (field_nodes.cols() > 0 && rational) out.fields = inv.asDiagonal() * out.fields;
 }
 
 /// Every cell's layout and control points, hanging sides of non-polynomial elements followed (bezier_hanging.hpp);
@@ -154,7 +190,7 @@ void all_cells(const basis::Geometry& geometry, const Eigen::VectorXd* u, const 
   control.resize(ne);
   for (std::size_t e = 0; e < ne; ++e) {
     layout[e] = &bezier_layout(space.kind(static_cast<Index>(e)).shape, degree[e]);
-    cell_control(static_cast<Index>(e), geometry, u, options.exact.get(), *layout[e], control[e]);
+    cell_control(static_cast<Index>(e), geometry, u, options, *layout[e], control[e]);
   }
   for (const HangingSide& h : hanging) {
     follow_coarse_side(h, layout, control);
@@ -181,6 +217,7 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
   all_cells(geometry, u, options, layout, control, exact_cell);
   BezierMesh mesh;
   std::vector<double> u_values, exact_values, weights;
+  std::vector<Eigen::VectorXd> point_fields;  // per point: all fields' components
   const bool any_rational = std::any_of(control.begin(), control.end(), [](const CellControl& c) { return c.weights.size() > 0; });
   for (Index e = 0; e < space.num_elements(); ++e) {
     const BezierLayout& l = *layout[static_cast<std::size_t>(e)];
@@ -193,6 +230,7 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
         u_values.push_back(uk);
         weights.push_back(wk);
         exact_values.push_back(options.exact ? c.exact(k) : 0.0);
+        if (!options.fields.empty()) point_fields.emplace_back(c.fields.row(k).transpose());
       }
       mesh.connectivity.push_back(id);
     }
@@ -210,6 +248,15 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
     mesh.exact = Eigen::Map<const Eigen::VectorXd>(exact_values.data(), static_cast<Eigen::Index>(exact_values.size()));
   }
   if (any_rational) mesh.weights = Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<Eigen::Index>(weights.size()));
+  Eigen::Index column = 0;
+  for (const SampledField& f : options.fields) {
+    Eigen::MatrixXd values(f.components, static_cast<Eigen::Index>(point_fields.size()));
+    for (std::size_t i = 0; i < point_fields.size(); ++i) {
+      values.col(static_cast<Eigen::Index>(i)) = point_fields[i].segment(column, f.components);
+    }
+    mesh.fields.emplace_back(f.name, std::move(values));
+    column += f.components;
+  }
   return mesh;
 }
 
@@ -238,6 +285,11 @@ vtkNew<vtkUnstructuredGrid> grid_with_points(const BezierMesh& mesh) {
     if (mesh.u.size() > 0) grid->GetPointData()->AddArray(point_array("error", mesh.u - mesh.exact));
   }
   if (mesh.weights.size() > 0) grid->GetPointData()->SetRationalWeights(point_array("RationalWeights", mesh.weights));
+  for (const auto& [name, values] : mesh.fields) {
+    auto a = make_double_array(name.c_str(), static_cast<int>(values.rows()), values.cols());
+    std::copy(values.data(), values.data() + values.size(), a->GetPointer(0));
+    grid->GetPointData()->AddArray(a);
+  }
   return grid;
 }
 
@@ -318,12 +370,14 @@ BezierMesh outline_points(const BezierMesh& mesh, Outline& o) {
   if (mesh.u.size() > 0) points.u.resize(count);
   if (mesh.exact.size() > 0) points.exact.resize(count);
   if (mesh.weights.size() > 0) points.weights.resize(count);
+  for (const auto& [name, values] : mesh.fields) points.fields.emplace_back(name, Eigen::MatrixXd(values.rows(), count));
   for (Eigen::Index i = 0; i < count; ++i) {
     const Index from = old_id[static_cast<std::size_t>(i)];
     points.points.col(i) = mesh.points.col(from);
     if (mesh.u.size() > 0) points.u(i) = mesh.u(from);
     if (mesh.exact.size() > 0) points.exact(i) = mesh.exact(from);
     if (mesh.weights.size() > 0) points.weights(i) = mesh.weights(from);
+    for (std::size_t f = 0; f < mesh.fields.size(); ++f) points.fields[f].second.col(i) = mesh.fields[f].second.col(from);
   }
   return points;
 }

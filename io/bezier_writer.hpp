@@ -20,6 +20,10 @@ struct BezierOptions {
   /// control points), with u coefficients closer than merge_tolerance × max |u|, are one point.
   double merge_tolerance = 1e-10;
   std::shared_ptr<const fem::Function> exact;  ///< optional exact solution
+  /// More point arrays (vtu_writer.hpp): a vector or tensor field, written as the Bernstein coefficients of its
+  /// degree-d interpolant at the cell's nodes (exact where the field is a polynomial of the cell's degree, e.g. a
+  /// displacement on a polynomial element; an interpolant of forces or stresses).
+  std::vector<SampledField> fields = {};
 };
 
 /// The Bézier cells of a geometry and a field on it. Element e is cell e, of degree d = Space::polynomial_degree(e)
@@ -40,6 +44,10 @@ struct BezierMesh {
   Eigen::VectorXd u;        ///< Bernstein coefficients of u per point (empty: no field)
   Eigen::VectorXd exact;    ///< coefficients of the degree-d interpolant of options.exact per point (empty without)
   Eigen::VectorXd weights;  ///< rational weights per point (VTK's RationalWeights; empty when no cell is rational)
+  /// BezierOptions::fields in order: name and coefficients (components × points). A point on a side shared by cells
+  /// has the first cell's (a field whose derivatives jump across the side, e.g. a force on a C1 space, is continuous
+  /// in the file).
+  std::vector<std::pair<std::string, Eigen::MatrixXd>> fields;
   std::vector<Index> offsets{0};  ///< cell c: points connectivity[offsets[c] .. offsets[c + 1] − 1], VTK's order
   std::vector<Index> connectivity;
   std::vector<int> degree;             ///< per cell
@@ -57,8 +65,8 @@ BezierMesh bezier_mesh(const basis::Geometry& geometry, const Eigen::VectorXd* u
 /// Writes the cells (binary VTK XML, VTK's writer). Point data: "u" (the exact Bernstein coefficients) when the
 /// mesh has a field; with an exact solution "exact" (its interpolant of each cell's degree, not the exact solution's
 /// Bernstein coefficients) and "error" = u − exact. Cell data: "HigherOrderDegrees" (VTK's attribute: d, d, 0),
-/// "element", "element_kind", "level" and element_data (vtu_cell_data.hpp). InputError(path, 0, "cannot write
-/// file") when VTK fails.
+/// "element", "element_kind", "level" and element_data (vtu_cell_data.hpp); the mesh's fields as point data. InputError(
+/// path, 0, "cannot write file") when VTK fails.
 void write_bezier_vtu(const std::string& path, const basis::Space& space, const BezierMesh& mesh,
                       const ElementData& element_data = {}, const Pieces& pieces = {});
 

@@ -6,8 +6,13 @@
 namespace iga::io {
 
 nlohmann::json VtuOutput::settings() const {
-  if (format == "linear") return {{"format", format}, {"samples", samples}};
-  return {{"format", format}, {"degree", degree}};
+  nlohmann::json out = format == "linear" ? nlohmann::json{{"format", format}, {"samples", samples}}
+                                          : nlohmann::json{{"format", format}, {"degree", degree}};
+  if (!fields.empty()) {
+    out["fields"] = nlohmann::json::array();
+    for (const SampledField& f : fields) out["fields"].push_back(f.name);
+  }
+  return out;
 }
 
 std::vector<std::string> vtu_formats() { return {"bezier", "linear"}; }
@@ -18,6 +23,7 @@ std::vector<std::string> write_output(const std::string& path, const basis::Geom
     BezierOptions bo;
     bo.degree = output.degree;
     bo.exact = output.exact;
+    bo.fields = output.fields;
     write_bezier(path, geometry, u, bo, element_data, output.pieces);
     if (output.pieces.ranks > 1) return {summary_path(path), summary_path(outline_path(path))};
     return {path, outline_path(path)};
@@ -26,6 +32,7 @@ std::vector<std::string> write_output(const std::string& path, const basis::Geom
   VtuOptions vo;
   vo.samples = output.samples;
   vo.exact = output.exact;
+  vo.fields = output.fields;
   if (u != nullptr) {
     write_vtu(path, geometry, *u, vo, element_data, output.pieces);
   } else {

@@ -18,13 +18,14 @@ struct VtuOutput {
   int samples = 5;                ///< linear: points per direction per element
   int degree = 6;                 ///< bezier: degree of the cells of elements that are not polynomial
   std::shared_ptr<const fem::Function> exact;
+  std::vector<SampledField> fields = {};  ///< vector and tensor point arrays (vtu_writer.hpp), in either format
   Pieces pieces;  ///< a distributed run's pieces (vtk_file.hpp): each rank writes its own, rank 0 the .pvtu
 
-  /// The effective settings for a JSON report ({"format", "samples"} or {"format", "degree"}).
+  /// The effective settings for a JSON report ({"format", "samples"} or {"format", "degree"}; "fields": their names).
   nlohmann::json settings() const;
 };
 
-/// Writes u (nullptr: the geometry alone, no "u") to path in the chosen format; Bézier output also writes
+/// Writes u (nullptr: the geometry alone, no "u") and output.fields to path in the chosen format; Bézier output also writes
 /// outline_path(path). Returns the files written (a distributed output: the .pvtu summaries, pieces beside them).
 /// InputError for an unknown format.
 std::vector<std::string> write_output(const std::string& path, const basis::Geometry& geometry, const Eigen::VectorXd* u,

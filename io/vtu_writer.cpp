@@ -120,15 +120,24 @@ void sample_element(Index e, const basis::Geometry& geometry, const SamplePatter
   thread_local Eigen::Matrix3Xd grads;
   int derivatives = 1;
   for (const SampledField& f : options.fields) derivatives = std::max(derivatives, f.derivatives);
-  geometry.space().evaluate(e, p.points, derivatives, bv);
-  geometry.evaluate(e, bv, gv, /*check=*/false, derivatives);
+  // Fields with second derivatives on an element at an extraordinary vertex: at field_points, apart.
+  const bool moved = derivatives >= 2 && !geometry.space().polynomial_degree(e) && !geometry.space().rational_form(e);
+  geometry.space().evaluate(e, p.points, moved ? 1 : derivatives, bv);
+  geometry.evaluate(e, bv, gv, /*check=*/false, moved ? 1 : derivatives);
   const bool with_grad = a.grad != nullptr, with_exact = a.exact != nullptr;
   if (sample != nullptr) (*sample)(e, p.points, bv, gv, values, with_grad ? &grads : nullptr);
   if (with_exact) options.exact->values(gv.x, exact_values);
   thread_local Eigen::MatrixXd field;
+  thread_local basis::BasisValues field_bv;
+  thread_local basis::GeometryValues field_gv;
+  if (moved) {
+    geometry.space().evaluate(e, field_points(geometry.space(), e, p.points, derivatives), derivatives, field_bv);
+    geometry.evaluate(e, field_bv, field_gv, /*check=*/false, derivatives);
+  }
   for (std::size_t f = 0; f < options.fields.size(); ++f) {
     const SampledField& sf = options.fields[f];
-    sf.values(e, bv, gv, field);
+    const bool apart = moved && sf.derivatives >= 2;
+    sf.values(e, apart ? field_bv : bv, apart ? field_gv : gv, field);
     if (field.rows() != sf.components || field.cols() != p.num_points()) {
       throw Error("write_vtu: field '" + sf.name + "' gave " + std::to_string(field.rows()) + " × " +
                   std::to_string(field.cols()) + " values for " + std::to_string(sf.components) + " × " +
@@ -227,6 +236,14 @@ void write_samples(const std::string& path, const basis::Geometry& geometry, con
 }
 
 }  // namespace
+
+Eigen::Matrix2Xd field_points(const basis::Space& space, Index e, const Eigen::Matrix2Xd& at, int derivatives) {
+  if (derivatives < 2 || space.polynomial_degree(e) || space.rational_form(e)) return at;
+  const Eigen::Vector2d centre =
+      space.kind(e).shape == basis::Shape::Triangle ? Eigen::Vector2d(1.0 / 3, 1.0 / 3) : Eigen::Vector2d(0.5, 0.5);
+  constexpr double kInside = 1e-6;
+  return (at.colwise() - centre) * (1 - kInside) + centre.replicate(1, at.cols());
+}
 
 Eigen::Matrix2Xd sample_points(basis::Shape shape, int samples) {
   if (samples < 2) throw InputError("write_vtu: samples must be at least 2, got " + std::to_string(samples));

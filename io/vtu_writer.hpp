@@ -28,6 +28,12 @@ struct SampledField {
   int derivatives = 1;
 };
 
+/// Where the writers evaluate fields that read `derivatives` on element e for its reference points `at`: `at` itself,
+/// except for second derivatives on an element that is neither polynomial nor rational (at an extraordinary vertex,
+/// where they need not exist at the corner: half-box refuses it): there each point is moved 1e-6 of the way to the
+/// element's centre.
+Eigen::Matrix2Xd field_points(const basis::Space& space, Index e, const Eigen::Matrix2Xd& at, int derivatives);
+
 struct VtuOptions {
   int samples = 5;                             ///< points per direction on each element (>= 2)
   std::shared_ptr<const fem::Function> exact;  ///< optional exact solution
