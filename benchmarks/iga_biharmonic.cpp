@@ -91,14 +91,7 @@ int main(int argc, char** argv) {
   app.add_option("--adaptive", o.adaptive, "not for this equation yet (no error estimator): refused with a message")
       ->check(iga::io::whole_number(0, 200));
   iga::io::add_solver_options(app, o.run);
-  app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();
-  app.add_option("--vtu-format", o.vtu_format, "bezier (one exact Bézier cell per polynomial element) or linear (--vtu-samples linear cells per element)")
-      ->check(CLI::IsMember(iga::io::vtu_formats()))->capture_default_str();
-  app.add_option("--vtu-samples", o.samples, "--vtu-format linear: sample points per direction per element")
-      ->check(iga::io::whole_number(2, 64))->capture_default_str();
-  app.add_option("--vtu-degree", o.vtu_degree, "--vtu-format bezier: degree of the cells of elements that are not polynomial")
-      ->check(iga::io::whole_number(1, 16))->capture_default_str();
-  app.add_option("--json", o.json, "JSON report file ('-': standard output, 'none' to skip)")->capture_default_str();
+  iga::io::add_vtu_output_options(app, o.vtu, o.vtu_format, o.samples, o.vtu_degree, o.json);
   if (const auto code = iga::io::parse_problem_program(app, argc, argv, o.run)) return *code;
   return iga::io::run_solver_program("iga-biharmonic", iga::io::solver_uses_petsc(o.run.solver, o.run.discretisation.basis), argv, o.run.quiet, o.run.threads,
                                      [&] { return run(o); });

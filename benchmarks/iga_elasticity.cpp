@@ -16,7 +16,7 @@
 #include "io/option_rules.hpp"
 #include "io/report.hpp"
 #include "io/vtk_file.hpp"
-#include "io/vtu_writer.hpp"
+#include "io/vtu_output.hpp"
 #include "pde/elasticity/input.hpp"
 
 namespace {
@@ -24,8 +24,8 @@ namespace {
 struct Options {
   iga::io::ProblemProgram run{"iga-elasticity"};
   iga::pde::ElasticityInput input;
-  std::string vtu = "result.vtu", json = "result.json", vtu_format = "linear";
-  int samples = 4, adaptive = -1;
+  std::string vtu = "result.vtu", json = "result.json", vtu_format = "bezier";
+  int samples = 4, vtu_degree = 6, adaptive = -1;
 };
 
 int run(Options& o) {
@@ -39,7 +39,13 @@ int run(Options& o) {
   }
   o.run.components = 2;
   const bool write_vtu = io::writes(o.vtu);
-  if (write_vtu) o.run.output_bytes_per_element = 10.0 * fem::vtu_memory(1.0, o.samples);  // 10 values per point
+  io::VtuOutput vtu;
+  vtu.format = o.vtu_format;
+  vtu.samples = o.samples;
+  vtu.degree = o.vtu_degree;
+  if (write_vtu) {  // 10 values per point
+    o.run.output_bytes_per_element = 10.0 * fem::vtu_memory(1.0, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1);
+  }
   pde::Lame material;
   double nu_zz = 0.0;
   o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {
@@ -50,15 +56,13 @@ int run(Options& o) {
   };
   if (write_vtu) o.run.output = [&](const basis::Geometry& geometry, const fem::ProblemResult& r, nlohmann::json& report) {
     // Displacement (a 3-vector for ParaView's Warp By Vector), stress (a symmetric tensor) and von Mises' stress.
-    io::VtuOptions out;
-    out.samples = o.samples;
     const auto field = [&](int which) { return pde::elasticity_sampler(geometry.space(), r.u, material, nu_zz, which); };
-    out.fields = {{"displacement", 3, field(0)}, {"stress", 6, field(1)}, {"von_mises", 1, field(2)}};
-    io::Pieces pieces;
-    if (r.ranks > 1) pieces = {fem::rank(), r.ranks, r.element_owner};
-    io::write_vtu(o.vtu, geometry, out, {}, pieces);
-    report["vtu_output"] = {{"format", "linear"}, {"samples", o.samples}, {"fields", {"displacement", "stress", "von_mises"}}};
-    report["vtu"] = r.ranks > 1 ? io::summary_path(o.vtu) : o.vtu;
+    vtu.fields = {{"displacement", 3, field(0)}, {"stress", 6, field(1)}, {"von_mises", 1, field(2)}};
+    if (r.ranks > 1) vtu.pieces = {fem::rank(), r.ranks, r.element_owner};
+    const std::vector<std::string> files = io::write_output(o.vtu, geometry, nullptr, vtu);
+    report["vtu_output"] = vtu.settings();
+    report["vtu"] = files[0];
+    if (files.size() > 1) report["vtu_outline"] = files[1];
     if (!o.run.quiet) std::cerr << "iga-elasticity: wrote " << report["vtu"].get<std::string>() << std::endl;
   };
   o.run.json = o.json;
@@ -98,8 +102,8 @@ int main(int argc, char** argv) {
   app.add_option("--adaptive", o.adaptive, "not for elasticity yet (no error estimator): refused with a message")
       ->check(iga::io::whole_number(0, 200));
   iga::io::add_solver_options(app, o.run);
-  iga::io::add_linear_output_options(app, o.vtu, o.vtu_format, o.samples, o.json,
-                                     "displacement, stress (XX, YY, ZZ, XY, YZ, XZ), von_mises");
+  iga::io::add_vtu_output_options(app, o.vtu, o.vtu_format, o.samples, o.vtu_degree, o.json,
+                                  "displacement, stress (XX, YY, ZZ, XY, YZ, XZ), von_mises");
   if (const auto code = iga::io::parse_problem_program(app, argc, argv, o.run)) return *code;
   // Without --mesh and --geometry, a backend that has built-in geometries gives the plate with a hole.
   const auto& takes = iga::basis::backend(o.run.discretisation.basis).options;

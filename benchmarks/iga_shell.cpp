@@ -18,7 +18,7 @@
 #include "io/program.hpp"
 #include "io/report.hpp"
 #include "io/vtk_file.hpp"
-#include "io/vtu_writer.hpp"
+#include "io/vtu_output.hpp"
 #include "pde/shell/input.hpp"
 #include "pde/shell/output.hpp"
 
@@ -27,8 +27,8 @@ namespace {
 struct Options {
   iga::io::ProblemProgram run{"iga-shell"};
   iga::pde::ShellInput input;
-  std::string vtu = "result.vtu", json = "result.json", vtu_format = "linear";
-  int samples = 4, adaptive = -1;
+  std::string vtu = "result.vtu", json = "result.json", vtu_format = "bezier";
+  int samples = 4, vtu_degree = 6, adaptive = -1;
 };
 
 // The displacement at each point of the set-up, with its reference where there is one, into report["points"].
@@ -62,7 +62,13 @@ int run(Options& o) {
   }
   o.run.components = 3;
   const bool write_vtu = io::writes(o.vtu);
-  if (write_vtu) o.run.output_bytes_per_element = 17.0 * fem::vtu_memory(1.0, o.samples);  // 17 values per point
+  io::VtuOutput vtu;
+  vtu.format = o.vtu_format;
+  vtu.samples = o.samples;
+  vtu.degree = o.vtu_degree;
+  if (write_vtu) {  // 17 values per point
+    o.run.output_bytes_per_element = 17.0 * fem::vtu_memory(1.0, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1);
+  }
   pde::ShellSetUp setup;
   std::vector<basis::LocatedPoint> located;
   o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {
@@ -77,17 +83,14 @@ int run(Options& o) {
     }
     report["points"] = point_report(geometry, r.u, setup.points, located, "iga-shell", o.run.quiet);
     if (!write_vtu) return;
-    io::VtuOptions out;
-    out.samples = o.samples;
     const auto field = [&](int which) { return pde::shell_sampler(geometry.space(), r.u, setup.data.material, which); };
-    out.fields = {{"displacement", 3, field(0), 2}, {"membrane_forces", 6, field(1), 2},
+    vtu.fields = {{"displacement", 3, field(0), 2}, {"membrane_forces", 6, field(1), 2},
                   {"bending_moments", 6, field(2), 2}, {"von_mises_top_bottom", 2, field(3), 2}};
-    io::Pieces pieces;
-    if (r.ranks > 1) pieces = {fem::rank(), r.ranks, r.element_owner};
-    io::write_vtu(o.vtu, geometry, out, {}, pieces);
-    report["vtu_output"] = {{"format", "linear"}, {"samples", o.samples},
-                            {"fields", {"displacement", "membrane_forces", "bending_moments", "von_mises_top_bottom"}}};
-    report["vtu"] = r.ranks > 1 ? io::summary_path(o.vtu) : o.vtu;
+    if (r.ranks > 1) vtu.pieces = {fem::rank(), r.ranks, r.element_owner};
+    const std::vector<std::string> files = io::write_output(o.vtu, geometry, nullptr, vtu);
+    report["vtu_output"] = vtu.settings();
+    report["vtu"] = files[0];
+    if (files.size() > 1) report["vtu_outline"] = files[1];
     if (!o.run.quiet) std::cerr << "iga-shell: wrote " << report["vtu"].get<std::string>() << std::endl;
   };
   o.run.json = o.json;
@@ -141,8 +144,8 @@ int main(int argc, char** argv) {
   app.add_option("--adaptive", o.adaptive, "not for shells yet (no error estimator): refused with a message")
       ->check(iga::io::whole_number(0, 200));
   iga::io::add_solver_options(app, o.run);
-  iga::io::add_linear_output_options(app, o.vtu, o.vtu_format, o.samples, o.json,
-                                     "displacement, membrane_forces and bending_moments (per unit length, XX, YY, ZZ, "
+  iga::io::add_vtu_output_options(app, o.vtu, o.vtu_format, o.samples, o.vtu_degree, o.json,
+                                  "displacement, membrane_forces and bending_moments (per unit length, XX, YY, ZZ, "
                                      "XY, YZ, XZ), von_mises_top_bottom");
   if (const auto code = iga::io::parse_problem_program(app, argc, argv, o.run)) return *code;
   // Without loads, the default problem; a problem without --mesh and --geometry is posed on its own surface.

@@ -12,6 +12,7 @@
 #include "io/problem_run.hpp"
 #include "io/option_rules.hpp"
 #include "io/program.hpp"
+#include "io/vtu_output.hpp"
 
 namespace iga::io {
 
@@ -104,16 +105,19 @@ inline void add_solver_options(CLI::App& app, ProblemProgram& run) {
       ->check(finite_number(0.001, 1e6));
 }
 
-/// --vtu, --vtu-format (linear only), --vtu-samples and --json of a PDE program whose .vtu fields are vectors and
-/// tensors (`fields`: what --vtu's help lists).
-inline void add_linear_output_options(CLI::App& app, std::string& vtu, std::string& vtu_format, int& samples,
-                                      std::string& json, const std::string& fields) {
-  app.add_option("--vtu", vtu, "ParaView output file ('none' to skip): " + fields)->capture_default_str();
-  app.add_option("--vtu-format", vtu_format, "linear (--vtu-samples linear cells per element); the Bézier output of "
-                 "vector and tensor fields is not written yet")
-      ->check(CLI::IsMember({"linear"}))->capture_default_str();
-  app.add_option("--vtu-samples", samples, "sample points per direction per element")->check(whole_number(2, 64))
+/// --vtu, --vtu-format, --vtu-samples, --vtu-degree and --json of a PDE program (io/vtu_output.hpp); `fields`: what
+/// --vtu's help lists as written (empty: nothing listed).
+inline void add_vtu_output_options(CLI::App& app, std::string& vtu, std::string& vtu_format, int& samples, int& degree,
+                                   std::string& json, const std::string& fields = "") {
+  app.add_option("--vtu", vtu, "ParaView output file ('none' to skip)" + (fields.empty() ? "" : ": " + fields))
       ->capture_default_str();
+  app.add_option("--vtu-format", vtu_format, "bezier (one Bézier cell per element, exact on polynomial and NURBS elements, "
+                 "plus <base>_outline.vtu with the element edges) or linear (--vtu-samples linear cells per element)")
+      ->check(CLI::IsMember(vtu_formats()))->capture_default_str();
+  app.add_option("--vtu-samples", samples, "--vtu-format linear: sample points per direction per element")
+      ->check(whole_number(2, 64))->capture_default_str();
+  app.add_option("--vtu-degree", degree, "--vtu-format bezier: degree of the cells of elements that are not polynomial")
+      ->check(whole_number(1, 16))->capture_default_str();
   app.add_option("--json", json, "JSON report file ('-': standard output, 'none' to skip)")->capture_default_str();
 }
 

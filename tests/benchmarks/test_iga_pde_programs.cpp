@@ -161,18 +161,23 @@ TEST_F(PdePrograms, ElasticityKirschRates) {
 }
 
 // The .vtu at the top of the hole (0, 1): u_y = −T(κ + 1)/(8μ) (Kirsch's u_y at r = a, θ = π/2), σ_xx = 3T, and von
-// Mises' stress of (3T, 0, ν 3T) in plane strain, √711 for T = 10, ν = 0.3; refine 5, cubic.
+// Mises' stress of (3T, 0, ν 3T) in plane strain, √711 for T = 10, ν = 0.3; refine 5, cubic; in both formats (the
+// point is a corner of a Bézier cell, where its coefficients are the values).
 TEST_F(PdePrograms, ElasticityVtuAtTheHole) {
-  const Outcome o = run(IGA_ELASTICITY_EXE, "--refine 5 --json none --quiet --vtu-samples 3");
-  ASSERT_EQ(o.code, 0) << o.err;
-  const double E = 1e5, nu = 0.3, T = 10, mu = E / (2 * (1 + nu)), kappa = 3 - 4 * nu;
-  double d = 0;
-  const double uy = point_value("result.vtu", "displacement", 1, 0.0, 1.0, &d);
-  EXPECT_LT(d, 1e-12);
-  EXPECT_NEAR(uy / (-T * (kappa + 1) / (8 * mu)), 1.0, 1e-6);
-  EXPECT_NEAR(point_value("result.vtu", "stress", 0, 0.0, 1.0, &d) / (3 * T), 1.0, 1e-3);
-  EXPECT_NEAR(point_value("result.vtu", "stress", 2, 0.0, 1.0, &d) / (nu * 3 * T), 1.0, 1e-3);  // σ_zz
-  EXPECT_NEAR(point_value("result.vtu", "von_mises", 0, 0.0, 1.0, &d) / std::sqrt(711.0), 1.0, 1e-3);
+  for (const std::string format : {"bezier", "linear --vtu-samples 3"}) {
+    const Outcome o = run(IGA_ELASTICITY_EXE, "--refine 5 --json out.json --quiet --vtu-format " + format);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(report("out.json")["vtu_output"]["fields"].size(), 3u);
+    const double E = 1e5, nu = 0.3, T = 10, mu = E / (2 * (1 + nu)), kappa = 3 - 4 * nu;
+    double d = 0;
+    const double uy = point_value("result.vtu", "displacement", 1, 0.0, 1.0, &d);
+    EXPECT_LT(d, 1e-12) << format;
+    EXPECT_NEAR(uy / (-T * (kappa + 1) / (8 * mu)), 1.0, 1e-6) << format;
+    EXPECT_NEAR(point_value("result.vtu", "stress", 0, 0.0, 1.0, &d) / (3 * T), 1.0, 1e-3) << format;
+    EXPECT_NEAR(point_value("result.vtu", "stress", 2, 0.0, 1.0, &d) / (nu * 3 * T), 1.0, 1e-3) << format;  // σ_zz
+    EXPECT_NEAR(point_value("result.vtu", "von_mises", 0, 0.0, 1.0, &d) / std::sqrt(711.0), 1.0, 1e-3) << format;
+  }
+  EXPECT_TRUE(fs::exists(dir_ / "result_outline.vtu"));
 }
 
 // The linear patch test from the command line: a linear displacement given as expressions, fixed on one side,
@@ -205,7 +210,7 @@ TEST_F(PdePrograms, ElasticityRefusals) {
 // 0.3006 (measured −0.0053 %), the energies, and the .vtu's displacement at that point; the hemisphere as a --config
 // file (the natural way to give a model) against its reference.
 TEST_F(PdePrograms, ShellObstacleCourse) {
-  const Outcome o = run(IGA_SHELL_EXE, "--quiet --vtu-samples 3");
+  const Outcome o = run(IGA_SHELL_EXE, "--quiet");
   ASSERT_EQ(o.code, 0) << o.err;
   const nlohmann::json j = report();
   const nlohmann::json& p = j["points"].at(0);
@@ -216,6 +221,8 @@ TEST_F(PdePrograms, ShellObstacleCourse) {
   EXPECT_NEAR(j["quantities"]["membrane energy"].get<double>() + j["quantities"]["bending energy"].get<double>(), energy,
               1e-12 * energy);
   EXPECT_EQ(j["problem"]["name"], "scordelis-lo-roof");
+  EXPECT_EQ(j["vtu_output"]["format"], "bezier");  // the default: exact rational cells of the NURBS roof
+  EXPECT_EQ(j["vtu_outline"], "result_outline.vtu");
   double d = 0;
   const double x = 25 * std::sin(40 * std::numbers::pi / 180);
   const double w = point_value("result.vtu", "displacement", 2, x, 25.0, &d);

@@ -20,7 +20,8 @@ std::string exe(const std::string& program) {
   static const std::map<std::string, std::string> keys = {{"iga-poisson", "IGA_POISSON_EXE"},
                                                           {"iga-bem", "IGA_BEM_EXE"},
                                                           {"iga-biharmonic", "IGA_BIHARMONIC_EXE"},
-                                                          {"iga-elasticity", "IGA_ELASTICITY_EXE"}};
+                                                          {"iga-elasticity", "IGA_ELASTICITY_EXE"},
+                                                          {"iga-shell", "IGA_SHELL_EXE"}};
   return iga::test::build_path(keys.at(program).c_str());
 }
 
