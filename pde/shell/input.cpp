@@ -93,7 +93,8 @@ Builtin builtin(const std::string& name) {
     b.items.point_support = {top.str()};
     b.items.point_load = {"10, 0, 0; 1, 0, 0", "0, 10, 0; 0, -1, 0"};
     b.points = {{"load A", {10.0, 0.0, 0.0}, 0, 0.0924,
-                 "0.0924: Belytschko et al. 1985 (MacNeal and Harder 1985: 0.094)"}};
+                 "0.0924: Belytschko et al. 1985 (MacNeal and Harder 1985: 0.094); 0.0924 is the hemisphere without a "
+                 "hole (Morley and Morris 1978), the Kirchhoff-Love limit with the 18 degree hole is 0.09352 (README)"}};
   } else {
     throw InputError("--problem: unknown problem '" + name + "' (scordelis-lo-roof, pinched-cylinder, pinched-hemisphere)");
   }

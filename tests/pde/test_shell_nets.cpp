@@ -1,7 +1,8 @@
-// Scordelis and Lo's roof on a Catmull–Clark net with extraordinary vertices of valence 3 and 5 (the shell issue's
-// item 3): a quad net of the roof with one edge rotated (two vertices of valence 3, two of valence 5), one
-// Catmull–Clark step so that no face touches two of them, its control points fitted so that the limit surface lies on
-// the cylinder (natural boundary rule, the roof's corners its corners), then the shell as on the NURBS patch.
+// The shell obstacle course on Catmull–Clark nets with extraordinary vertices of valence 3 and 5 (the shell issue's
+// item 3): quad nets with one edge rotated (two vertices of valence 3, two of valence 5), their control points fitted by
+// least squares so that the limit surface lies on the exact shape. Scordelis and Lo's roof (one Catmull–Clark step so
+// that no face touches two EVs, natural boundary rule, the roof's corners its corners), the pinched cylinder on the
+// whole tube and the pinched hemisphere on the whole band (clamped rule), then the shell as on the NURBS patches.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -10,8 +11,11 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <functional>
 #include <set>
+#include <tuple>
 
+#include "basis/bspline/patches.hpp"
 #include "basis/catmull_clark/quad_mesh.hpp"
 #include "basis/locate.hpp"
 #include "basis/registry.hpp"
@@ -79,10 +83,25 @@ std::vector<int> part_roles(const basis::Geometry& g, const Cylinder& c) {
   return role;
 }
 
-// The control points of g fitted so that its surface lies on the cylinder: least squares over samples of every element
-// towards the samples' radial projections (θ kept in [θ0, θ1], y in [0, L]; boundary samples exactly onto their side's
-// plane or line), repeated.
-basis::Geometry fit_to_cylinder(const basis::Geometry& g, const Cylinder& c, const std::vector<int>& role) {
+// Where a sample of the surface should be: a point of the target surface for x (boundary samples: on their part's
+// side, by its role).
+using Projector = std::function<Eigen::Vector3d(const Eigen::Vector3d& x, int role)>;
+
+// The cylinder's projector: θ kept in [θ0, θ1], y in [0, L]; role 0, 1 the ends y = 0, L, 2, 3 the edges θ0, θ1.
+Projector onto(const Cylinder& c) {
+  return [c](const Eigen::Vector3d& x, int r) {
+    double theta = std::clamp(std::atan2(x(0), x(2)), c.t0, c.t1), y = std::clamp(x(1), 0.0, c.length);
+    if (r == 0) y = 0;
+    if (r == 1) y = c.length;
+    if (r == 2) theta = c.t0;
+    if (r == 3) theta = c.t1;
+    return c.at(theta, y);
+  };
+}
+
+// The control points of g fitted so that its surface lies on the target: least squares over samples of every element
+// towards their projections (boundary samples onto their part's side), repeated.
+basis::Geometry fit(const basis::Geometry& g, const Projector& project, const std::vector<int>& role) {
   const basis::Space& space = g.space();
   struct Sample {
     Index element;
@@ -115,28 +134,22 @@ basis::Geometry fit_to_cylinder(const basis::Geometry& g, const Cylinder& c, con
   for (int it = 0; it < 12; ++it) {
     const Eigen::MatrixXd x = phi * p;
     Eigen::MatrixXd t(x.rows(), 3);
-    for (Index s = 0; s < x.rows(); ++s) {
-      double theta = std::clamp(std::atan2(x(s, 0), x(s, 2)), c.t0, c.t1), y = std::clamp(x(s, 1), 0.0, c.length);
-      const int r = samples[static_cast<std::size_t>(s)].role;
-      if (r == 0) y = 0;
-      if (r == 1) y = c.length;
-      if (r == 2) theta = c.t0;
-      if (r == 3) theta = c.t1;
-      t.row(s) = c.at(theta, y).transpose();
-    }
+    for (Index s = 0; s < x.rows(); ++s) t.row(s) = project(x.row(s).transpose(), samples[static_cast<std::size_t>(s)].role).transpose();
     p = normal.solve(phi_t * t);
   }
   return basis::Geometry(g.space_ptr(), p);
 }
 
 // The fitted Catmull–Clark geometry of cylinder_net(c, m), refined `refine` times; its parts' roles.
-basis::Geometry fitted_net(const Cylinder& c, int m, int refine, std::vector<int>& role) {
+basis::Geometry fitted_net(const Cylinder& c, int m, int refine, std::vector<int>& role,
+                           const std::string& boundary = "natural") {
   const mesh::PolyMesh net = cylinder_net(c, m);
   basis::BackendOptions o;
+  o.cc_boundary = boundary;
   basis::BackendFacts facts;
   const basis::Geometry g0 = basis::make_geometry(basis::backend("cc"), &net, o, facts);
   role = part_roles(g0, c);
-  return refine::refine_uniform(fit_to_cylinder(g0, c, role), refine).geometry;
+  return refine::refine_uniform(fit(g0, onto(c), role), refine).geometry;
 }
 
 // The largest | |x| − R | over a point of every element, and the valences of the extraordinary vertices.
@@ -159,6 +172,88 @@ std::vector<int> parts_of(const std::vector<int>& role, std::initializer_list<in
     if (std::find(which.begin(), which.end(), role[i]) != which.end()) out.push_back(static_cast<int>(i));
   }
   return out;
+}
+
+// m_t × m_y quads around a whole tube (θ over [−π, π), periodic), one edge rotated near θ = π/2 in the middle.
+mesh::PolyMesh tube_net(const Cylinder& c, int mt, int my) {
+  std::vector<Eigen::Vector3d> p;
+  for (int j = 0; j <= my; ++j)
+    for (int i = 0; i < mt; ++i) p.push_back(c.at(-std::numbers::pi + 2 * std::numbers::pi * i / mt, c.length * j / my));
+  auto v = [&](int i, int j) { return Index(j * mt + (i % mt)); };
+  const int ri = 3 * mt / 4 - 1, rj = my / 2 - 1;
+  p[static_cast<std::size_t>(v(ri + 1, rj))].y() -= 0.25 * c.length / my;
+  p[static_cast<std::size_t>(v(ri + 1, rj + 1))].y() += 0.25 * c.length / my;
+  std::vector<std::vector<Index>> f;
+  for (int j = 0; j < my; ++j)
+    for (int i = 0; i < mt; ++i) {
+      if (j == rj && i == ri) {
+        f.push_back({v(ri, rj), v(ri + 1, rj), v(ri + 2, rj), v(ri + 2, rj + 1)});
+        f.push_back({v(ri + 2, rj + 1), v(ri + 1, rj + 1), v(ri, rj + 1), v(ri, rj)});
+      } else if (!(j == rj && i == ri + 1)) {
+        f.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+      }
+    }
+  return mesh::PolyMesh::build(p, f);
+}
+
+// mλ × mφ quads around the hemisphere's band from the equator to latitude 72° (the 18° hole), λ periodic, one edge
+// rotated in the middle of the band.
+mesh::PolyMesh band_net(int ml, int mp) {
+  const double top = 72 * kDeg;
+  std::vector<Eigen::Vector3d> p;
+  for (int j = 0; j <= mp; ++j)
+    for (int i = 0; i < ml; ++i) {
+      const double l = 2 * std::numbers::pi * i / ml, f = top * j / mp;
+      p.push_back(10 * Eigen::Vector3d(std::cos(f) * std::cos(l), std::cos(f) * std::sin(l), std::sin(f)));
+    }
+  auto v = [&](int i, int j) { return Index(j * ml + (i % ml)); };
+  const int ri = ml / 8, rj = mp / 2 - 1;
+  std::vector<std::vector<Index>> f;
+  for (int j = 0; j < mp; ++j)
+    for (int i = 0; i < ml; ++i) {
+      if (j == rj && i == ri) {
+        f.push_back({v(ri, rj), v(ri + 1, rj), v(ri + 2, rj), v(ri + 2, rj + 1)});
+        f.push_back({v(ri + 2, rj + 1), v(ri + 1, rj + 1), v(ri, rj + 1), v(ri, rj)});
+      } else if (!(j == rj && i == ri + 1)) {
+        f.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+      }
+    }
+  return mesh::PolyMesh::build(p, f);
+}
+
+// The sphere of radius 10 between the equator and latitude 72° (the pinched hemisphere's 18° hole): role 0 the
+// equator, 1 the hole's edge.
+Projector onto_band() {
+  return [](const Eigen::Vector3d& x, int r) {
+    const double top = 72 * kDeg, l = std::atan2(x(1), x(0));
+    double f = std::clamp(std::atan2(x(2), std::hypot(x(0), x(1))), 0.0, top);
+    if (r == 0) f = 0;
+    if (r == 1) f = top;
+    return Eigen::Vector3d(10 * Eigen::Vector3d(std::cos(f) * std::cos(l), std::cos(f) * std::sin(l), std::sin(f)));
+  };
+}
+
+// Each boundary part's role by the height of its first side's midpoint: 0 below z = `split`, 1 above.
+std::vector<int> roles_by_height(const basis::Geometry& g, double split) {
+  std::vector<int> role(g.space().boundary_part_names().size(), -1);
+  for (const auto& e : g.space().boundary_edges()) {
+    Eigen::Matrix2Xd mid(2, 1);
+    mid.col(0) = basis::side_point(g.space().kind(e.element).shape, e.side, 0.5);
+    basis::GeometryValues gv;
+    g.evaluate(e.element, mid, gv);
+    role[static_cast<std::size_t>(e.part)] = gv.x(2, 0) < split ? 0 : 1;
+  }
+  return role;
+}
+
+// The Catmull–Clark geometry of a net (boundary rule `boundary`), fitted by `project`, refined `refine` times.
+basis::Geometry fitted(const mesh::PolyMesh& net, const std::string& boundary, const Projector& project,
+                       const std::function<std::vector<int>(const basis::Geometry&)>& roles, int refine) {
+  basis::BackendOptions o;
+  o.cc_boundary = boundary;
+  basis::BackendFacts facts;
+  const basis::Geometry g0 = basis::make_geometry(basis::backend("cc"), &net, o, facts);
+  return refine::refine_uniform(fit(g0, project, roles(g0)), refine).geometry;
 }
 
 }  // namespace
@@ -191,4 +286,90 @@ TEST(ShellNets, ScordelisLoOnACatmullClarkNetWithExtraordinaryVertices) {
     EXPECT_LT(err, 0.03 * roof.r / (m * m));  // measured 0.015 R/m² at m = 8 and 16: the fit's error falls as h²
     EXPECT_LT(std::abs(w / 0.3006 - 1), 0.005);
   }
+}
+
+
+// The pinched cylinder on a Catmull–Clark net of the whole tube (no symmetry planes: on the octant's net the natural
+// rule's boundary functions converge slowly at the symmetry corner under the load, −5.6 % at 49,923 dofs), two EVs of
+// valence 3 and 5, diaphragms at both ends, P = 1 at the top and the bottom of the middle section. Measured: 16 × 8 net
+// refined once / twice: −2.58 % / −0.17 % (6,336 / 24,960 dofs); 32 × 16 refined twice +0.11 % (99,072).
+TEST(ShellNets, PinchedCylinderOnAWholeTubeNet) {
+  const Cylinder c{300.0, 600.0, -std::numbers::pi, std::numbers::pi};
+  std::vector<double> w;
+  for (int refine : {1, 2}) {
+    const basis::Geometry g = fitted(tube_net(c, 16, 8), "natural", onto(c), [&](const basis::Geometry& g0) { return part_roles(g0, c); }, refine);
+    std::set<int> valences;
+    const double err = distance_from(g, c, valences);
+    EXPECT_EQ(valences, (std::set<int>{3, 5}));
+    const std::vector<int> ends = parts_of(part_roles(g, c), {0, 1});
+    ASSERT_EQ(ends.size(), 2u);
+    pde::ShellData d;
+    d.material = {3e6, 0.3, 3.0};
+    d.supports = {{0, ends, nullptr}, {2, ends, nullptr}};
+    d.point_supports = {{basis::nearest_point(g, c.at(0, 0)).x, 1}};  // the axial translation
+    const basis::LocatedPoint top = basis::nearest_point(g, c.at(0, 300.0));
+    const basis::LocatedPoint bottom = basis::nearest_point(g, c.at(std::numbers::pi, 300.0));
+    d.point_loads = {{top.x, Eigen::Vector3d(0.0, 0.0, -1.0)}, {bottom.x, Eigen::Vector3d(0.0, 0.0, 1.0)}};
+    const auto rules = quadrature::make_rule_provider("tiles:4:8", 4);
+    const fem::ProblemResult r = fem::solve_problem(g, *rules, pde::make_shell(d));
+    // Half the closing of the diameter under the loads (free of any rigid motion).
+    w.push_back(0.5 * (pde::shell_displacement(g.space(), r.u, bottom.element, bottom.uv)(2) -
+                       pde::shell_displacement(g.space(), r.u, top.element, top.uv)(2)));
+    std::cout << "tube net 16 x 8, refine " << refine << ": " << r.dofs << " dofs, |r - R| <= " << err << ": w = " << w.back()
+              << " (" << 100 * (w.back() / 1.8248e-5 - 1) << " % from 1.8248e-5)\n";
+  }
+  EXPECT_LT(std::abs(w[1] / 1.8248e-5 - 1), 0.01);
+  EXPECT_LT(std::abs(w[1] / 1.8248e-5 - 1), std::abs(w[0] / 1.8248e-5 - 1));
+}
+
+// The pinched hemisphere on a Catmull–Clark net of the whole band (latitudes 0 to 72°, EVs of valence 3 and 5, clamped
+// boundary rule: the loads sit on the free equator), loads ±2 at the four points of the equator, held by six point
+// supports on the hole's edge that take no reaction; half the opening of the diameter under the loads against the
+// quarter NURBS patch with its symmetry planes (p = 4, 32 × 32): another space, another model, the same limit.
+// Measured: 16 × 4 and 32 × 8 nets refined once, −0.49 % and −0.022 % from the patch (3,648 and 13,440 dofs).
+TEST(ShellNets, PinchedHemisphereOnAWholeBandNetAgreesWithTheQuarterPatch) {
+  const double top = 72 * kDeg, pi = std::numbers::pi;
+  const basis::Geometry patch =
+      refine::refine_uniform(basis::bspline::make_sphere_patch(4, 10.0, 0.0, 90 * kDeg, 0.0, top), 5).geometry;
+  pde::ShellData q;
+  q.material = {6.825e7, 0.3, 0.04};
+  const auto slope = pde::Hold::kSlope;
+  q.supports = {{1, {3}, nullptr}, {0, {1}, nullptr}, {0, {3}, nullptr, slope}, {1, {1}, nullptr, slope}, {2, {3, 1}, nullptr, slope}};
+  const double rc = 10 * std::cos(top);
+  q.point_supports = {{Eigen::Vector3d(rc * std::sqrt(0.5), rc * std::sqrt(0.5), 10 * std::sin(top)), 2}};
+  q.point_loads = {{Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(1, 0, 0)}, {Eigen::Vector3d(0, 10, 0), Eigen::Vector3d(0, -1, 0)}};
+  const fem::ProblemResult rq = fem::solve_problem(patch, quadrature::Gauss(5), pde::make_shell(q));
+  const basis::LocatedPoint pa = basis::locate_point(patch, Eigen::Vector3d(10, 0, 0), "A");
+  const double quarter = pde::shell_displacement(patch.space(), rq.u, pa.element, pa.uv)(0);
+  std::vector<double> gap;
+  for (const auto& [ml, mp] : {std::pair{16, 4}, std::pair{32, 8}}) {
+    const basis::Geometry g = fitted(band_net(ml, mp), "clamped", onto_band(), [](const basis::Geometry& g0) { return roles_by_height(g0, 5.0); }, 1);
+    std::set<int> valences;
+    for (Index e = 0; e < g.space().num_elements(); ++e) {
+      if (g.space().kind(e).family == basis::Family::Irregular) valences.insert(g.space().kind(e).valence);
+    }
+    EXPECT_EQ(valences, (std::set<int>{3, 5}));
+    pde::ShellData d;
+    d.material = q.material;
+    const auto on_top = [&](double l) {
+      return basis::nearest_point(g, 10 * Eigen::Vector3d(std::cos(top) * std::cos(l), std::cos(top) * std::sin(l), std::sin(top))).x;
+    };
+    // z at three points, x at two opposite ones, y at one: the six rigid motions, statically determinate.
+    d.point_supports = {{on_top(0), 2}, {on_top(2 * pi / 3), 2}, {on_top(4 * pi / 3), 2}, {on_top(pi / 2), 0},
+                        {on_top(3 * pi / 2), 0}, {on_top(0), 1}};
+    const basis::LocatedPoint a = basis::nearest_point(g, Eigen::Vector3d(10, 0, 0)), a2 = basis::nearest_point(g, Eigen::Vector3d(-10, 0, 0));
+    d.point_loads = {{a.x, Eigen::Vector3d(2, 0, 0)}, {a2.x, Eigen::Vector3d(-2, 0, 0)},
+                     {basis::nearest_point(g, Eigen::Vector3d(0, 10, 0)).x, Eigen::Vector3d(0, -2, 0)},
+                     {basis::nearest_point(g, Eigen::Vector3d(0, -10, 0)).x, Eigen::Vector3d(0, 2, 0)}};
+    const auto rules = quadrature::make_rule_provider("tiles:4:8", 4);
+    const fem::ProblemResult r = fem::solve_problem(g, *rules, pde::make_shell(d));
+    const double u = 0.5 * (pde::shell_displacement(g.space(), r.u, a.element, a.uv)(0) -
+                            pde::shell_displacement(g.space(), r.u, a2.element, a2.uv)(0));
+    gap.push_back(std::abs(u / quarter - 1));
+    std::cout << "hemisphere band net " << ml << " x " << mp << ", refine 1: " << r.dofs << " dofs: u = " << u << " ("
+              << 100 * (u / quarter - 1) << " % from the quarter patch's " << quarter << ", " << 100 * (u / 0.0924 - 1)
+              << " % from 0.0924)\n";
+  }
+  EXPECT_LT(gap[1], 1e-3);
+  EXPECT_LT(gap[1], gap[0]);
 }
