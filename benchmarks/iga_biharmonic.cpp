@@ -32,11 +32,8 @@ int run(Options& o) {
                            "iga-poisson's); use --refine");
   }
   const bool write_vtu = io::writes(o.vtu);
-  io::VtuOutput vtu;
-  vtu.format = o.vtu_format;
-  vtu.samples = o.samples;
-  vtu.degree = o.vtu_degree;
-  if (write_vtu) o.run.output_bytes_per_element = fem::vtu_memory(1.0, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1);
+  io::VtuOutput vtu = io::VtuOutput::of(o.vtu_format, o.samples, o.vtu_degree);
+  if (write_vtu) o.run.output_bytes_per_element = fem::vtu_memory(1.0, vtu.points_per_direction());
   std::shared_ptr<const fem::Function> exact;
   o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {
     pde::BiharmonicData data = pde::biharmonic_data(o.input, geometry, report["problem"]);

@@ -39,13 +39,9 @@ int run(Options& o) {
   }
   o.run.components = 2;
   const bool write_vtu = io::writes(o.vtu);
-  io::VtuOutput vtu;
-  vtu.format = o.vtu_format;
-  vtu.samples = o.samples;
-  vtu.degree = o.vtu_degree;
-  if (write_vtu) {  // 10 values per point
-    o.run.output_bytes_per_element = 10.0 * fem::vtu_memory(1.0, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1);
-  }
+  io::VtuOutput vtu = io::VtuOutput::of(o.vtu_format, o.samples, o.vtu_degree);
+  // 10 values per point
+  if (write_vtu) o.run.output_bytes_per_element = 10.0 * fem::vtu_memory(1.0, vtu.points_per_direction());
   pde::Lame material;
   double nu_zz = 0.0;
   o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {

@@ -62,13 +62,9 @@ int run(Options& o) {
   }
   o.run.components = 3;
   const bool write_vtu = io::writes(o.vtu);
-  io::VtuOutput vtu;
-  vtu.format = o.vtu_format;
-  vtu.samples = o.samples;
-  vtu.degree = o.vtu_degree;
-  if (write_vtu) {  // 17 values per point
-    o.run.output_bytes_per_element = 17.0 * fem::vtu_memory(1.0, o.vtu_format == "linear" ? o.samples : o.vtu_degree + 1);
-  }
+  io::VtuOutput vtu = io::VtuOutput::of(o.vtu_format, o.samples, o.vtu_degree);
+  // 17 values per point
+  if (write_vtu) o.run.output_bytes_per_element = 17.0 * fem::vtu_memory(1.0, vtu.points_per_direction());
   pde::ShellSetUp setup;
   std::vector<basis::LocatedPoint> located;
   o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {

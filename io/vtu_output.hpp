@@ -21,6 +21,17 @@ struct VtuOutput {
   std::vector<SampledField> fields = {};  ///< vector and tensor point arrays (vtu_writer.hpp), in either format
   Pieces pieces;  ///< a distributed run's pieces (vtk_file.hpp): each rank writes its own, rank 0 the .pvtu
 
+  /// The settings a program's --vtu-format, --vtu-samples and --vtu-degree give.
+  static VtuOutput of(const std::string& format, int samples, int degree) {
+    VtuOutput out;
+    out.format = format;
+    out.samples = samples;
+    out.degree = degree;
+    return out;
+  }
+  /// Points per direction of an element's output (for memory forecasts): the samples, or a Bézier cell's degree + 1.
+  int points_per_direction() const { return format == "linear" ? samples : degree + 1; }
+
   /// The effective settings for a JSON report ({"format", "samples"} or {"format", "degree"}; "fields": their names).
   nlohmann::json settings() const;
 };

@@ -37,8 +37,25 @@ struct Cylinder {
   Eigen::Vector3d at(double t, double y) const { return {r * std::sin(t), y, r * std::cos(t)}; }
 };
 
-// m × m quads over the cylinder with one edge rotated in the middle (the hexagon of two quads split by its other
-// diagonal: two vertices of valence 3, two of valence 5; the two moved a quarter cell so that both quads are convex).
+// The faces of ni × nj quads, vertex (i, j) being v(i, j), with the edge between quads (ri, rj) and (ri + 1, rj) rotated:
+// the hexagon f a b c d e of the two (f = (ri, rj), a = (ri + 1, rj), b = (ri + 2, rj), c = (ri + 2, rj + 1),
+// d = (ri + 1, rj + 1), e = (ri, rj + 1)) split by its other diagonal c f: two vertices of valence 3 (a, d), two of 5.
+std::vector<std::vector<Index>> grid_faces(int ni, int nj, const std::function<Index(int, int)>& v, int ri, int rj) {
+  std::vector<std::vector<Index>> f;
+  for (int j = 0; j < nj; ++j)
+    for (int i = 0; i < ni; ++i) {
+      if (j == rj && i == ri) {
+        f.push_back({v(ri, rj), v(ri + 1, rj), v(ri + 2, rj), v(ri + 2, rj + 1)});      // f a b c
+        f.push_back({v(ri + 2, rj + 1), v(ri + 1, rj + 1), v(ri, rj + 1), v(ri, rj)});  // c d e f
+      } else if (!(j == rj && i == ri + 1)) {
+        f.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+      }
+    }
+  return f;
+}
+
+// m × m quads over the cylinder with one edge rotated in the middle (grid_faces), its two ends moved a quarter cell so
+// that both quads are convex.
 mesh::PolyMesh cylinder_net(const Cylinder& c, int m) {
   std::vector<Eigen::Vector3d> p;
   for (int j = 0; j <= m; ++j)
@@ -47,17 +64,7 @@ mesh::PolyMesh cylinder_net(const Cylinder& c, int m) {
   const int ri = m / 2 - 1, rj = m / 2;  // quads (ri, rj) and (ri + 1, rj) share the edge a = (ri + 1, rj), d = (ri + 1, rj + 1)
   p[static_cast<std::size_t>(v(ri + 1, rj))].y() -= 0.25 * c.length / m;
   p[static_cast<std::size_t>(v(ri + 1, rj + 1))].y() += 0.25 * c.length / m;
-  std::vector<std::vector<Index>> f;
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
-      if (j == rj && i == ri) {  // the hexagon f a b c d e, f = (ri, rj), b = (ri + 2, rj), c = (ri + 2, rj + 1), e = (ri, rj + 1)
-        f.push_back({v(ri, rj), v(ri + 1, rj), v(ri + 2, rj), v(ri + 2, rj + 1)});      // f a b c
-        f.push_back({v(ri + 2, rj + 1), v(ri + 1, rj + 1), v(ri, rj + 1), v(ri, rj)});  // c d e f
-      } else if (!(j == rj && i == ri + 1)) {
-        f.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
-      }
-    }
-  return mesh::PolyMesh::build(p, f);
+  return mesh::PolyMesh::build(p, grid_faces(m, m, v, ri, rj));
 }
 
 // Each boundary part's side of the cylinder, from the mean of its sides' midpoints: 0 the end y = 0, 1 the end y = L,
@@ -183,17 +190,7 @@ mesh::PolyMesh tube_net(const Cylinder& c, int mt, int my) {
   const int ri = 3 * mt / 4 - 1, rj = my / 2 - 1;
   p[static_cast<std::size_t>(v(ri + 1, rj))].y() -= 0.25 * c.length / my;
   p[static_cast<std::size_t>(v(ri + 1, rj + 1))].y() += 0.25 * c.length / my;
-  std::vector<std::vector<Index>> f;
-  for (int j = 0; j < my; ++j)
-    for (int i = 0; i < mt; ++i) {
-      if (j == rj && i == ri) {
-        f.push_back({v(ri, rj), v(ri + 1, rj), v(ri + 2, rj), v(ri + 2, rj + 1)});
-        f.push_back({v(ri + 2, rj + 1), v(ri + 1, rj + 1), v(ri, rj + 1), v(ri, rj)});
-      } else if (!(j == rj && i == ri + 1)) {
-        f.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
-      }
-    }
-  return mesh::PolyMesh::build(p, f);
+  return mesh::PolyMesh::build(p, grid_faces(mt, my, v, ri, rj));
 }
 
 // mλ × mφ quads around the hemisphere's band from the equator to latitude 72° (the 18° hole), λ periodic, one edge
@@ -208,17 +205,7 @@ mesh::PolyMesh band_net(int ml, int mp) {
     }
   auto v = [&](int i, int j) { return Index(j * ml + (i % ml)); };
   const int ri = ml / 8, rj = mp / 2 - 1;
-  std::vector<std::vector<Index>> f;
-  for (int j = 0; j < mp; ++j)
-    for (int i = 0; i < ml; ++i) {
-      if (j == rj && i == ri) {
-        f.push_back({v(ri, rj), v(ri + 1, rj), v(ri + 2, rj), v(ri + 2, rj + 1)});
-        f.push_back({v(ri + 2, rj + 1), v(ri + 1, rj + 1), v(ri, rj + 1), v(ri, rj)});
-      } else if (!(j == rj && i == ri + 1)) {
-        f.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
-      }
-    }
-  return mesh::PolyMesh::build(p, f);
+  return mesh::PolyMesh::build(p, grid_faces(ml, mp, v, ri, rj));
 }
 
 // The sphere of radius 10 between the equator and latitude 72° (the pinched hemisphere's 18° hole): role 0 the
