@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -17,6 +16,7 @@
 
 #include "basis/bspline/patches.hpp"
 #include "basis/catmull_clark/quad_mesh.hpp"
+#include "basis/fit_surface.hpp"
 #include "basis/locate.hpp"
 #include "basis/registry.hpp"
 #include "fem/problem.hpp"
@@ -35,6 +35,7 @@ constexpr double kDeg = std::numbers::pi / 180;
 struct Cylinder {
   double r, length, t0, t1;
   Eigen::Vector3d at(double t, double y) const { return {r * std::sin(t), y, r * std::cos(t)}; }
+  basis::ExactSurface shape() const { return {basis::ExactSurface::Kind::kCylinder, r, {t0, t1}, {0.0, length}}; }
 };
 
 // The faces of ni × nj quads, vertex (i, j) being v(i, j), with the edge between quads (ri, rj) and (ri + 1, rj) rotated:
@@ -90,73 +91,14 @@ std::vector<int> part_roles(const basis::Geometry& g, const Cylinder& c) {
   return role;
 }
 
-// Where a sample of the surface should be: a point of the target surface for x (boundary samples: on their part's
-// side, by its role).
-using Projector = std::function<Eigen::Vector3d(const Eigen::Vector3d& x, int role)>;
-
-// The cylinder's projector: θ kept in [θ0, θ1], y in [0, L]; role 0, 1 the ends y = 0, L, 2, 3 the edges θ0, θ1.
-Projector onto(const Cylinder& c) {
-  return [c](const Eigen::Vector3d& x, int r) {
-    double theta = std::clamp(std::atan2(x(0), x(2)), c.t0, c.t1), y = std::clamp(x(1), 0.0, c.length);
-    if (r == 0) y = 0;
-    if (r == 1) y = c.length;
-    if (r == 2) theta = c.t0;
-    if (r == 3) theta = c.t1;
-    return c.at(theta, y);
-  };
-}
-
-// The control points of g fitted so that its surface lies on the target: least squares over samples of every element
-// towards their projections (boundary samples onto their part's side), repeated.
-basis::Geometry fit(const basis::Geometry& g, const Projector& project, const std::vector<int>& role) {
-  const basis::Space& space = g.space();
-  struct Sample {
-    Index element;
-    Eigen::Vector2d uv;
-    int role;
-  };
-  std::vector<Sample> samples;
-  const int k = 5;
-  for (Index e = 0; e < space.num_elements(); ++e)
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i < k; ++i) samples.push_back({e, Eigen::Vector2d((i + 0.5) / k, (j + 0.5) / k), -1});
-  for (const auto& e : space.boundary_edges())
-    for (int i = 0; i <= 2 * k; ++i)
-      samples.push_back({e.element, basis::side_point(space.kind(e.element).shape, e.side, double(i) / (2 * k)),
-                         role[static_cast<std::size_t>(e.part)]});
-  std::vector<Eigen::Triplet<double>> entries;
-  basis::BasisValues bv;
-  Eigen::Matrix2Xd at(2, 1);
-  for (std::size_t s = 0; s < samples.size(); ++s) {
-    at.col(0) = samples[s].uv;
-    space.evaluate(samples[s].element, at, 0, bv);
-    const auto dofs = space.dofs(samples[s].element);
-    for (std::size_t a = 0; a < dofs.size(); ++a) entries.emplace_back(static_cast<Index>(s), dofs[a], bv.value(static_cast<Index>(a), 0));
-  }
-  Eigen::SparseMatrix<double> phi(static_cast<Index>(samples.size()), space.num_dofs());
-  phi.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::SparseMatrix<double> phi_t = phi.transpose(), gram = phi_t * phi;
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> normal(gram);
-  Eigen::MatrixXd p = g.control_points();
-  for (int it = 0; it < 12; ++it) {
-    const Eigen::MatrixXd x = phi * p;
-    Eigen::MatrixXd t(x.rows(), 3);
-    for (Index s = 0; s < x.rows(); ++s) t.row(s) = project(x.row(s).transpose(), samples[static_cast<std::size_t>(s)].role).transpose();
-    p = normal.solve(phi_t * t);
-  }
-  return basis::Geometry(g.space_ptr(), p);
-}
-
 // The fitted Catmull–Clark geometry of cylinder_net(c, m), refined `refine` times; its parts' roles.
-basis::Geometry fitted_net(const Cylinder& c, int m, int refine, std::vector<int>& role,
-                           const std::string& boundary = "natural") {
+basis::Geometry fitted_net(const Cylinder& c, int m, int refine, std::vector<int>& role) {
   const mesh::PolyMesh net = cylinder_net(c, m);
   basis::BackendOptions o;
-  o.cc_boundary = boundary;
   basis::BackendFacts facts;
   const basis::Geometry g0 = basis::make_geometry(basis::backend("cc"), &net, o, facts);
   role = part_roles(g0, c);
-  return refine::refine_uniform(fit(g0, onto(c), role), refine).geometry;
+  return refine::refine_uniform(basis::fit_to_surface(g0, c.shape()).geometry, refine).geometry;
 }
 
 // The largest | |x| − R | over a point of every element, and the valences of the extraordinary vertices.
@@ -208,39 +150,14 @@ mesh::PolyMesh band_net(int ml, int mp) {
   return mesh::PolyMesh::build(p, grid_faces(ml, mp, v, ri, rj));
 }
 
-// The sphere of radius 10 between the equator and latitude 72° (the pinched hemisphere's 18° hole): role 0 the
-// equator, 1 the hole's edge.
-Projector onto_band() {
-  return [](const Eigen::Vector3d& x, int r) {
-    const double top = 72 * kDeg, l = std::atan2(x(1), x(0));
-    double f = std::clamp(std::atan2(x(2), std::hypot(x(0), x(1))), 0.0, top);
-    if (r == 0) f = 0;
-    if (r == 1) f = top;
-    return Eigen::Vector3d(10 * Eigen::Vector3d(std::cos(f) * std::cos(l), std::cos(f) * std::sin(l), std::sin(f)));
-  };
-}
-
-// Each boundary part's role by the height of its first side's midpoint: 0 below z = `split`, 1 above.
-std::vector<int> roles_by_height(const basis::Geometry& g, double split) {
-  std::vector<int> role(g.space().boundary_part_names().size(), -1);
-  for (const auto& e : g.space().boundary_edges()) {
-    Eigen::Matrix2Xd mid(2, 1);
-    mid.col(0) = basis::side_point(g.space().kind(e.element).shape, e.side, 0.5);
-    basis::GeometryValues gv;
-    g.evaluate(e.element, mid, gv);
-    role[static_cast<std::size_t>(e.part)] = gv.x(2, 0) < split ? 0 : 1;
-  }
-  return role;
-}
-
-// The Catmull–Clark geometry of a net (boundary rule `boundary`), fitted by `project`, refined `refine` times.
-basis::Geometry fitted(const mesh::PolyMesh& net, const std::string& boundary, const Projector& project,
-                       const std::function<std::vector<int>(const basis::Geometry&)>& roles, int refine) {
+// The Catmull–Clark geometry of a net (boundary rule `boundary`) fitted to the shape (basis::fit_to_surface), refined
+// `refine` times.
+basis::Geometry fitted(const mesh::PolyMesh& net, const std::string& boundary, const basis::ExactSurface& shape, int refine) {
   basis::BackendOptions o;
   o.cc_boundary = boundary;
   basis::BackendFacts facts;
   const basis::Geometry g0 = basis::make_geometry(basis::backend("cc"), &net, o, facts);
-  return refine::refine_uniform(fit(g0, project, roles(g0)), refine).geometry;
+  return refine::refine_uniform(basis::fit_to_surface(g0, shape).geometry, refine).geometry;
 }
 
 }  // namespace
@@ -284,7 +201,7 @@ TEST(ShellNets, PinchedCylinderOnAWholeTubeNet) {
   const Cylinder c{300.0, 600.0, -std::numbers::pi, std::numbers::pi};
   std::vector<double> w;
   for (int refine : {1, 2}) {
-    const basis::Geometry g = fitted(tube_net(c, 16, 8), "natural", onto(c), [&](const basis::Geometry& g0) { return part_roles(g0, c); }, refine);
+    const basis::Geometry g = fitted(tube_net(c, 16, 8), "natural", c.shape(), refine);
     std::set<int> valences;
     const double err = distance_from(g, c, valences);
     EXPECT_EQ(valences, (std::set<int>{3, 5}));
@@ -330,7 +247,8 @@ TEST(ShellNets, PinchedHemisphereOnAWholeBandNetAgreesWithTheQuarterPatch) {
   const double quarter = pde::shell_displacement(patch.space(), rq.u, pa.element, pa.uv)(0);
   std::vector<double> gap;
   for (const auto& [ml, mp] : {std::pair{16, 4}, std::pair{32, 8}}) {
-    const basis::Geometry g = fitted(band_net(ml, mp), "clamped", onto_band(), [](const basis::Geometry& g0) { return roles_by_height(g0, 5.0); }, 1);
+    const basis::ExactSurface band{basis::ExactSurface::Kind::kSphere, 10.0, {-pi, pi}, {0.0, top}};
+    const basis::Geometry g = fitted(band_net(ml, mp), "clamped", band, 1);
     std::set<int> valences;
     for (Index e = 0; e < g.space().num_elements(); ++e) {
       if (g.space().kind(e).family == basis::Family::Irregular) valences.insert(g.space().kind(e).valence);
