@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "basis/basis_values.hpp"
@@ -55,6 +57,49 @@ Eigen::Vector3d ExactSurface::project(const Eigen::Vector3d& x, bool on_boundary
     p = q;
   }
   return at(p(0), p(1));
+}
+
+std::string ExactSurface::description() const {
+  const double deg = 180 / std::numbers::pi;
+  std::ostringstream out;
+  out << (kind == Kind::kCylinder ? "cylinder" : "sphere") << " R = " << radius << ", "
+      << (kind == Kind::kCylinder ? "a" : "longitude") << " in [" << a[0] * deg << ", " << a[1] * deg << "] degrees, ";
+  if (kind == Kind::kCylinder) {
+    out << "y in [" << b[0] << ", " << b[1] << "]";
+  } else {
+    out << "latitude in [" << b[0] * deg << ", " << b[1] * deg << "] degrees";
+  }
+  return out.str();
+}
+
+ExactSurface parse_exact_surface(const std::string& text, const std::string& what) {
+  const std::string usage = what + " '" + text + "': expected 'cylinder; R; A0; A1; Y0; Y1' (about the y axis, x = R sin a, "
+                            "z = R cos a, angles in degrees) or 'sphere; R; LON0; LON1; LAT0; LAT1' (degrees)";
+  std::vector<std::string> f;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ';');) {
+    const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    f.push_back(first == std::string::npos ? "" : item.substr(first, last - first + 1));
+  }
+  if (f.size() != 6 || (f[0] != "cylinder" && f[0] != "sphere")) throw InputError(usage);
+  double v[5];
+  for (int i = 0; i < 5; ++i) {
+    std::size_t used = 0;
+    try {
+      v[i] = std::stod(f[static_cast<std::size_t>(i + 1)], &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != f[static_cast<std::size_t>(i + 1)].size() || !std::isfinite(v[i])) throw InputError(usage);
+  }
+  const bool sphere = f[0] == "sphere";
+  if (!(v[0] > 0)) throw InputError(what + " '" + text + "': the radius must be > 0");
+  if (!(v[2] > v[1]) || v[2] - v[1] > 360) throw InputError(what + " '" + text + "': the angle range must be increasing and at most 360 degrees");
+  if (!(v[4] > v[3])) throw InputError(what + " '" + text + "': the " + (sphere ? "latitude" : "y") + " range must be increasing");
+  if (sphere && (v[3] < -90 || v[4] > 90)) throw InputError(what + " '" + text + "': latitudes lie in [-90, 90] degrees");
+  const double deg = std::numbers::pi / 180, scale_b = sphere ? deg : 1.0;
+  return {sphere ? ExactSurface::Kind::kSphere : ExactSurface::Kind::kCylinder, v[0], {v[1] * deg, v[2] * deg},
+          {v[3] * scale_b, v[4] * scale_b}};
 }
 
 SurfaceFit fit_to_surface(const Geometry& g, const ExactSurface& shape, int rounds) {

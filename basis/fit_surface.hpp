@@ -4,6 +4,7 @@
 // cylinders and spheres its NURBS patches describe (any backend whose functions sum to one).
 #include <Eigen/Core>
 #include <array>
+#include <string>
 
 #include "basis/geometry.hpp"
 
@@ -25,7 +26,14 @@ struct ExactSurface {
   /// That point; on_boundary: the nearest point of the shape's boundary curves instead (a = a0, a1 unless periodic;
   /// b = b0, b1), the one nearest along the surface.
   Eigen::Vector3d project(const Eigen::Vector3d& x, bool on_boundary = false) const;
+  /// "cylinder R = 300, a in [-180, 180] degrees, y in [0, 600]" and the like, for messages.
+  std::string description() const;
 };
+
+/// "cylinder; R; A0; A1; Y0; Y1" (a in degrees) or "sphere; R; LON0; LON1; LAT0; LAT1" (degrees): the --fit-to option.
+/// InputError naming `what` and the text for anything else (a radius that is not > 0, a range that is empty or wider
+/// than 360°, a latitude outside [−90, 90]).
+ExactSurface parse_exact_surface(const std::string& text, const std::string& what);
 
 struct SurfaceFit {
   Geometry geometry;

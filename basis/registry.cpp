@@ -1,5 +1,7 @@
 #include "basis/registry.hpp"
 
+#include <sstream>
+
 #include <algorithm>
 #include <optional>
 
@@ -55,6 +57,18 @@ namespace {
 // Every geometry a program builds is proved not to fold where its elements have a polynomial form, and a planar
 // domain to be bounded by simple closed curves and covered once (folds between the points of a rule, slits and
 // self-overlapping nets were solved with exit 0 before: issue 38).
+// The built geometry, fitted to options.fit_to when given (its distance a note).
+Geometry fitted(Geometry g, const BackendOptions& options, BackendFacts& facts) {
+  if (!options.fit_to) return g;
+  if (g.dim() != 3) throw InputError("--fit-to: the geometry is planar; a surface in 3D is fitted to a cylinder or a sphere");
+  SurfaceFit fit = fit_to_surface(g, *options.fit_to);
+  std::ostringstream note;
+  note << "--fit-to: control points fitted to the " << options.fit_to->description()
+       << "; the surface's samples lie within " << fit.distance << " of it";
+  facts.notes.push_back(note.str());
+  return std::move(fit.geometry);
+}
+
 Geometry certified(Geometry g) {
   if (const std::string why = fold_certificate(g); !why.empty()) throw NumericalError(why);
   if (const std::string why = boundary_overlap(g); !why.empty()) throw InputError(why);
@@ -79,7 +93,7 @@ Geometry make_geometry(const Backend& backend, const mesh::PolyMesh* net, const 
   if (!net && !backend.default_geometry) {
     throw InputError("--basis " + backend.name + " needs --mesh (a control net)");
   }
-  return certified(net ? backend.from_net(*net, options, facts) : backend.default_geometry(options));
+  return certified(fitted(net ? backend.from_net(*net, options, facts) : backend.default_geometry(options), options, facts));
 }
 
 mesh::PolyMesh net_with_control_points(const mesh::PolyMesh& net, const Geometry& geometry,
@@ -100,7 +114,7 @@ Refinement make_refined_geometry(const Backend& backend, const mesh::PolyMesh* n
   if (steps < 0) throw InputError("refinement steps must be >= 0, got " + std::to_string(steps));
   if (!backend.nested && net && steps > 0 && backend.refine_net) {
     refuse_cracks(*net);
-    Geometry g = certified(backend.from_net(backend.refine_net(*net, steps, options, facts), options, facts));
+    Geometry g = certified(fitted(backend.from_net(backend.refine_net(*net, steps, options, facts), options, facts), options, facts));
     return {std::move(g), Eigen::SparseMatrix<double>(), false};
   }
   return refine_uniform(make_geometry(backend, net, options, facts), steps, facts, keep_steps);

@@ -8,10 +8,12 @@
 #include <Eigen/Sparse>
 #include <functional>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "basis/fit_surface.hpp"
 #include "basis/geometry.hpp"
 #include "mesh/poly_mesh.hpp"
 
@@ -32,6 +34,9 @@ struct BackendOptions {
   /// "coarse-split" (bspline): every knot interval of the patch split into split_u × split_v equal parts before any
   /// refinement (knot insertion: the same map, a coarse mesh of chosen aspect ratio)
   int split_u = 1, split_v = 1;
+  /// "fit-to" (any backend): the built geometry's control points fitted so that its surface lies on this surface
+  /// (basis::fit_to_surface), before any refinement; the largest distance left is a note of BackendFacts.
+  std::optional<ExactSurface> fit_to;
 };
 
 /// Facts about a build or refinement that a program reports: counts for the JSON report under '/'-separated

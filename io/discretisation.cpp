@@ -54,6 +54,7 @@ Discretisation make_discretisation(const DiscretisationOptions& o) {
   d.options = backend_options(o);
   if (o.count("coarse-split")) parse_coarse_split(o.coarse_split, d.options);
   if (o.count("cc-corners")) d.options.cc_corners = parse_vertex_numbers("--cc-corners", o.cc_corners);
+  if (!o.fit_to.empty()) d.options.fit_to = basis::parse_exact_surface(o.fit_to, "--fit-to");
   d.options.net_name = o.mesh;
   d.degree = basis::degree(*d.backend, d.options);
   if (!o.mesh.empty()) d.net = mesh::read_obj(o.mesh);

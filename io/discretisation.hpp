@@ -27,6 +27,7 @@ struct DiscretisationOptions {
   std::string refine_intervals;   ///< --refine-intervals (bspline): 0-based knot intervals, comma-separated
   std::string coarse_split;       ///< --coarse-split (bspline): "U,V", parts per knot interval along u and v
   std::string quadrature;         ///< --quadrature; empty: the backend's default for the degree
+  std::string fit_to;             ///< --fit-to (any backend): an exact surface the built geometry is fitted to
   int degree = 3, refine = -1, presubdivide = 0;  ///< refine < 0: the backend's default
   int grade_evs = -1;  ///< --grade-evs (cc): local refinements toward extraordinary vertices after --refine; < 0: the backend's default_grading
   /// The backend options given on the command line (names without dashes): only these reach the backend.

@@ -1,7 +1,7 @@
 #pragma once
 // The command-line options of a solver program's discretisation (io/discretisation.hpp), the same words in every
 // program: --mesh, --basis, --degree, --refine, --refine-intervals, --coarse-split, --geometry, --cc-boundary, --cc-enrich,
-// --cc-corners, --grade-evs, --presubdivide, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
+// --cc-corners, --grade-evs, --presubdivide, --fit-to, --quadrature; and a PDE program's solver options. Header-only: programs link CLI11 themselves (io/program.hpp).
 #include <CLI/CLI.hpp>
 
 #include <optional>
@@ -73,6 +73,12 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
                  "polyhedral: Catmull–Clark steps applied to the net first (one makes any net with valences and face sizes "
                  "<= 8 admissible)")
       ->check(whole_number(0, 6));
+  app.add_option("--fit-to", o.fit_to,
+                 "any backend: fit the built geometry's control points so that its surface lies on 'cylinder; R; A0; A1; Y0; "
+                 "Y1' (about the y axis, x = R sin a, z = R cos a) or 'sphere; R; LON0; LON1; LAT0; LAT1' (angles in "
+                 "degrees; a range of 360 is periodic), before refinement: a net made on the shape becomes that shape "
+                 "(basis::fit_to_surface)")
+      ->check(non_blank());
   app.add_option("--quadrature", o.quadrature,
                  "quadrature rule: gauss:P (P points per direction) or tiles:P:L (P×P Gauss on each tile of levels 1..L of "
                  "elements at extraordinary vertices); default gauss:degree+1");

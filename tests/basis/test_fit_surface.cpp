@@ -107,3 +107,22 @@ TEST(FitSurface, RefusesAPlanarGeometry) {
   const basis::Geometry square = basis::bspline::make_rectangle(2);
   EXPECT_THROW(basis::fit_to_surface(square, basis::ExactSurface{}), InputError);
 }
+
+TEST(FitSurface, ParsesTheFitToOption) {
+  const basis::ExactSurface c = basis::parse_exact_surface("cylinder; 300; -180; 180; 0; 600", "--fit-to");
+  EXPECT_EQ(c.kind, basis::ExactSurface::Kind::kCylinder);
+  EXPECT_DOUBLE_EQ(c.radius, 300.0);
+  EXPECT_DOUBLE_EQ(c.a[0], -kPi);
+  EXPECT_DOUBLE_EQ(c.a[1], kPi);
+  EXPECT_DOUBLE_EQ(c.b[1], 600.0);  // y in length units
+  EXPECT_TRUE(c.periodic());
+  const basis::ExactSurface s = basis::parse_exact_surface(" sphere ;10; 0 ; 90; 0; 72 ", "--fit-to");
+  EXPECT_EQ(s.kind, basis::ExactSurface::Kind::kSphere);
+  EXPECT_DOUBLE_EQ(s.b[1], 72 * kPi / 180);  // latitudes in degrees
+  EXPECT_FALSE(s.periodic());
+  for (const char* bad : {"cylinder; 1; 0; 90; 0", "cylinder; 0; 0; 90; 0; 1", "cylinder; 1; 90; 0; 0; 1",
+                          "cylinder; 1; 0; 400; 0; 1", "sphere; 1; 0; 90; 10; 10", "cylinder; 1; 0; 90; 0; 1x",
+                          "cylinder; 1; 0; 90; 0; nan"}) {
+    EXPECT_THROW(basis::parse_exact_surface(bad, "--fit-to"), InputError) << bad;
+  }
+}
