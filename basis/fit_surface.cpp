@@ -113,8 +113,13 @@ SurfaceFit fit_to_surface(const Geometry& g, const ExactSurface& shape, int roun
   std::vector<Sample> samples;
   const int k = 5;
   for (Index e = 0; e < space.num_elements(); ++e) {
+    // k × k cell centres of the unit square; of a triangle, the k(k + 1)/2 points ((i + 1/3)/k, (j + 1/3)/k), i + j < k.
+    const bool triangle = space.kind(e).shape == Shape::Triangle;
+    const double offset = triangle ? 1.0 / 3 : 0.5;
     for (int j = 0; j < k; ++j) {
-      for (int i = 0; i < k; ++i) samples.push_back({e, Eigen::Vector2d((i + 0.5) / k, (j + 0.5) / k), false});
+      for (int i = 0; i < (triangle ? k - j : k); ++i) {
+        samples.push_back({e, Eigen::Vector2d((i + offset) / k, (j + offset) / k), false});
+      }
     }
   }
   for (const BoundaryEdge& e : space.boundary_edges()) {
