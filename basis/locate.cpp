@@ -110,15 +110,16 @@ LocatedPoint nearest_point(const Geometry& geometry, const Eigen::Vector3d& poin
 }
 
 LocatedPoint locate_point(const Geometry& geometry, const Eigen::Vector3d& point, const std::string& what,
-                          double tolerance) {
+                          double tolerance, double allowance) {
   const LocatedPoint r = nearest_point(geometry, point);
   const Eigen::MatrixXd& p = geometry.control_points();
   const double extent = (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
-  if (!(r.distance <= tolerance * extent)) {
+  const double allowed = std::max(tolerance * extent, allowance);
+  if (!(r.distance <= allowed)) {
     std::ostringstream msg;
     msg << what << ": (" << point(0) << ", " << point(1) << ", " << point(2)
         << ") is not on the surface: the nearest point of the geometry is (" << r.x(0) << ", " << r.x(1) << ", "
-        << r.x(2) << ") at distance " << r.distance;
+        << r.x(2) << ") at distance " << r.distance << ", more than the " << allowed << " allowed";
     throw InputError(msg.str());
   }
   return r;

@@ -22,8 +22,10 @@ struct LocatedPoint {
 LocatedPoint nearest_point(const Geometry& geometry, const Eigen::Vector3d& point);
 
 /// nearest_point, or InputError "<what>: (x, y, z) is not on the surface: the nearest point of the geometry is
-/// (..) at distance d" when the distance exceeds `tolerance` × the control net's extent.
+/// (..) at distance d, more than the a allowed" when the distance exceeds a = max(`tolerance` × the control net's
+/// extent, `allowance`). The allowance is for a geometry that approximates the intended surface (a net fitted to an
+/// exact shape: BackendFacts::fit_distance), whose points are given on the intended one.
 LocatedPoint locate_point(const Geometry& geometry, const Eigen::Vector3d& point, const std::string& what,
-                          double tolerance = 1e-6);
+                          double tolerance = 1e-6, double allowance = 0.0);
 
 }  // namespace iga::basis

@@ -1,9 +1,8 @@
 #include "basis/registry.hpp"
 
-#include <sstream>
-
 #include <algorithm>
 #include <optional>
+#include <sstream>
 
 #include "basis/boundary_overlap.hpp"
 #include "basis/fold_certificate.hpp"
@@ -54,9 +53,6 @@ int degree(const Backend& backend, const BackendOptions& options) {
 }
 
 namespace {
-// Every geometry a program builds is proved not to fold where its elements have a polynomial form, and a planar
-// domain to be bounded by simple closed curves and covered once (folds between the points of a rule, slits and
-// self-overlapping nets were solved with exit 0 before: issue 38).
 // The built geometry, fitted to options.fit_to when given (its distance a note).
 Geometry fitted(Geometry g, const BackendOptions& options, BackendFacts& facts) {
   if (!options.fit_to) return g;
@@ -66,9 +62,13 @@ Geometry fitted(Geometry g, const BackendOptions& options, BackendFacts& facts) 
   note << "--fit-to: control points fitted to the " << options.fit_to->description()
        << "; the surface's samples lie within " << fit.distance << " of it";
   facts.notes.push_back(note.str());
+  facts.fit_distance = fit.distance;
   return std::move(fit.geometry);
 }
 
+// Every geometry a program builds is proved not to fold where its elements have a polynomial form, and a planar
+// domain to be bounded by simple closed curves and covered once (folds between the points of a rule, slits and
+// self-overlapping nets were solved with exit 0 before: issue 38).
 Geometry certified(Geometry g) {
   if (const std::string why = fold_certificate(g); !why.empty()) throw NumericalError(why);
   if (const std::string why = boundary_overlap(g); !why.empty()) throw InputError(why);

@@ -45,6 +45,9 @@ struct BackendOptions {
 struct BackendFacts {
   std::map<std::string, long long> counts;
   std::vector<std::string> notes;  ///< e.g. "applied 1 global Catmull–Clark step(s) first"
+  /// With BackendOptions::fit_to: the largest distance of the fitted surface's samples from the exact shape
+  /// (SurfaceFit::distance), how far points given on the shape may lie from the geometry; negative: not fitted.
+  double fit_distance = -1.0;
 };
 
 /// A refined geometry: the same map on a finer space. Nested spaces carry the prolongation (fine coefficients

@@ -35,7 +35,7 @@ int run(Options& o) {
   io::VtuOutput vtu = io::VtuOutput::of(o.vtu_format, o.samples, o.vtu_degree);
   if (write_vtu) o.run.output_bytes_per_element = fem::vtu_memory(1.0, vtu.points_per_direction());
   std::shared_ptr<const fem::Function> exact;
-  o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {
+  o.run.problem = [&](const basis::Geometry& geometry, const basis::BackendFacts&, nlohmann::json& report) {
     pde::BiharmonicData data = pde::biharmonic_data(o.input, geometry, report["problem"]);
     exact = data.exact;
     return pde::make_biharmonic(std::move(data));

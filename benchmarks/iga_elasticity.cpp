@@ -44,7 +44,7 @@ int run(Options& o) {
   if (write_vtu) o.run.output_bytes_per_element = 10.0 * fem::vtu_memory(1.0, vtu.points_per_direction());
   pde::Lame material;
   double nu_zz = 0.0;
-  o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {
+  o.run.problem = [&](const basis::Geometry& geometry, const basis::BackendFacts&, nlohmann::json& report) {
     pde::ElasticityData data = pde::elasticity_data(o.input, geometry, report["problem"]);
     material = pde::lame(data.young, data.poisson, data.model);
     nu_zz = data.model == pde::PlaneModel::kStrain ? data.poisson : 0.0;

@@ -40,7 +40,7 @@ nlohmann::json point_report(const iga::basis::Geometry& geometry, const Eigen::V
     const iga::pde::ShellPoint& p = points[k];
     const Eigen::Vector3d d = iga::pde::shell_displacement(geometry.space(), u, located[k].element, located[k].uv);
     nlohmann::json j = {{"name", p.name}, {"at", {p.at(0), p.at(1), p.at(2)}}, {"element", located[k].element},
-                        {"displacement", {d(0), d(1), d(2)}}};
+                        {"distance_from_surface", located[k].distance}, {"displacement", {d(0), d(1), d(2)}}};
     std::ostringstream line;
     line << program << ": " << p.name << ": displacement (" << d(0) << ", " << d(1) << ", " << d(2) << ")";
     if (p.component >= 0) {
@@ -67,9 +67,14 @@ int run(Options& o) {
   if (write_vtu) o.run.output_bytes_per_element = 17.0 * fem::vtu_memory(1.0, vtu.points_per_direction());
   pde::ShellSetUp setup;
   std::vector<basis::LocatedPoint> located;
-  o.run.problem = [&](const basis::Geometry& geometry, nlohmann::json& report) {
+  o.run.problem = [&](const basis::Geometry& geometry, const basis::BackendFacts& facts, nlohmann::json& report) {
     setup = pde::shell_setup(o.input, geometry, report["problem"]);
-    for (const pde::ShellPoint& p : setup.points) located.push_back(basis::locate_point(geometry, p.at, "--point " + p.name));
+    // Points given on the shape a net was fitted to lie up to the fit's distance from the net's surface (sampled:
+    // twice it is allowed); the report gives each point's distance.
+    setup.data.point_allowance = std::max(0.0, 2 * facts.fit_distance);
+    for (const pde::ShellPoint& p : setup.points) {
+      located.push_back(basis::locate_point(geometry, p.at, "--point " + p.name, 1e-6, setup.data.point_allowance));
+    }
     return pde::make_shell(setup.data);
   };
   o.run.output = [&](const basis::Geometry& geometry, const fem::ProblemResult& r, nlohmann::json& report) {
@@ -142,7 +147,7 @@ int main(int argc, char** argv) {
   iga::io::add_solver_options(app, o.run);
   iga::io::add_vtu_output_options(app, o.vtu, o.vtu_format, o.samples, o.vtu_degree, o.json,
                                   "displacement, membrane_forces and bending_moments (per unit length, XX, YY, ZZ, "
-                                     "XY, YZ, XZ), von_mises_top_bottom");
+                                  "XY, YZ, XZ), von_mises_top_bottom");
   if (const auto code = iga::io::parse_problem_program(app, argc, argv, o.run)) return *code;
   // Without loads, the default problem; a problem without --mesh and --geometry is posed on its own surface.
   const iga::pde::ShellInput& in = o.input;

@@ -216,6 +216,7 @@ nlohmann::json discretisation_report(const DiscretisationOptions& o, const Discr
   if (!o.refine_intervals.empty()) j["refine_intervals"] = o.refine_intervals;
   if (o.count("coarse-split")) j["coarse_split"] = {d.options.split_u, d.options.split_v};
   for (const auto& [path, count] : facts.counts) j[nlohmann::json::json_pointer("/" + path)] = count;
+  if (facts.fit_distance >= 0) j["fit_to"] = {{"surface", o.fit_to}, {"distance", facts.fit_distance}};
   return j;
 }
 

@@ -77,7 +77,8 @@ inline void add_discretisation_options(CLI::App& app, DiscretisationOptions& o) 
                  "any backend: fit the built geometry's control points so that its surface lies on 'cylinder; R; A0; A1; Y0; "
                  "Y1' (about the y axis, x = R sin a, z = R cos a) or 'sphere; R; LON0; LON1; LAT0; LAT1' (angles in "
                  "degrees; a range of 360 is periodic), before refinement: a net made on the shape becomes that shape "
-                 "(basis::fit_to_surface)")
+                 "(basis::fit_to_surface; the distance left is in the report as fit_to; iga-shell's points given on the "
+                 "shape may lie up to twice that far from the surface)")
       ->check(non_blank());
   app.add_option("--quadrature", o.quadrature,
                  "quadrature rule: gauss:P (P points per direction) or tiles:P:L (P×P Gauss on each tile of levels 1..L of "

@@ -136,7 +136,7 @@ nlohmann::json run_problem_program(const ProblemProgram& run) {
   const basis::Geometry& geometry = refined.geometry;
   nlohmann::json j = run.run_info;
   j.update(discretisation_report(run.discretisation, d, refined, facts));
-  const std::shared_ptr<const fem::Problem> problem = run.problem(geometry, j);
+  const std::shared_ptr<const fem::Problem> problem = run.problem(geometry, facts, j);
   const std::unique_ptr<quadrature::RuleProvider> rules = make_rules(run.discretisation, d);
   const fem::SolverOptions solver = solver_options(run.solver, run.petsc_options, std::move(refined.steps));
   fem::ProblemSolver p(geometry, *rules, problem, solver);

@@ -87,8 +87,11 @@ struct ProblemProgram {
   int components = 1;  ///< of the field (the memory check before the problem is made)
   /// Bytes of the output per element (0: none written), for the memory check before the work.
   double output_bytes_per_element = 0.0;
-  /// The problem on the refined geometry; describes its data in report["problem"].
-  std::function<std::shared_ptr<const fem::Problem>(const basis::Geometry&, nlohmann::json& report)> problem;
+  /// The problem on the refined geometry (with what its backend told of it: facts.fit_distance, how far points given
+  /// on an exact shape may lie from a fitted geometry); describes its data in report["problem"].
+  std::function<std::shared_ptr<const fem::Problem>(const basis::Geometry&, const basis::BackendFacts& facts,
+                                                    nlohmann::json& report)>
+      problem;
   /// Writes the output of the solve (every rank calls it: a distributed run writes its pieces), names the files in
   /// the report; runs as the phase "output".
   std::function<void(const basis::Geometry&, const fem::ProblemResult&, nlohmann::json& report)> output;

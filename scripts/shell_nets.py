@@ -7,6 +7,11 @@ The vertices lie on the shape; --fit-to then fits the limit surface to it.
                                                    around, NY along; the rotated edge near a = pi/2, mid-length
   scripts/shell_nets.py band R LAT NA NB OUT.obj   the sphere of radius R from the equator to latitude LAT (degrees):
                                                    NA quads around, NB from the equator up
+  scripts/shell_nets.py roof R L A NA NY OUT.obj   the cylindrical roof x = (R sin a, y, R cos a), -A <= a <= A (degrees),
+                                                   0 <= y <= L: NA quads across, NY along; the rotated edge mid-roof
+
+With --triangles (before the kind) each quad is split along its diagonal from its first vertex: a triangle mesh whose
+dual (`iga-geometry --three-valent dual`) is a three-valent net for half-box splines.
 """
 import math
 import sys
@@ -46,21 +51,42 @@ def band(r, top, na, nb):
     return points, faces(na, nb, v, na // 8, nb // 2 - 1)
 
 
+def roof(r, length, angle, na, ny):
+    a = math.radians(angle)
+    points = [[r * math.sin(-a + 2 * a * i / na), length * j / ny, r * math.cos(-a + 2 * a * i / na)]
+              for j in range(ny + 1) for i in range(na + 1)]
+    v = lambda i, j: j * (na + 1) + i
+    ri, rj = na // 2 - 1, ny // 2
+    points[v(ri + 1, rj)][1] -= 0.25 * length / ny
+    points[v(ri + 1, rj + 1)][1] += 0.25 * length / ny
+    return points, faces(na, ny, v, ri, rj)
+
+
 def main(argv):
-    if len(argv) != 7 or argv[1] not in ("tube", "band"):
+    triangles = len(argv) > 1 and argv[1] == "--triangles"
+    if triangles:
+        argv = argv[:1] + argv[2:]
+    counts = {"tube": 7, "band": 7, "roof": 8}
+    if len(argv) < 2 or counts.get(argv[1]) != len(argv):
         sys.stderr.write(__doc__)
         return 2
     try:
-        r, extent, na, nb = float(argv[2]), float(argv[3]), int(argv[4]), int(argv[5])
+        numbers = [float(w) for w in argv[2:-3]]
+        na, nb = int(argv[-3]), int(argv[-2])
     except ValueError:
-        sys.stderr.write("shell_nets.py: error: R and L (or LAT) are numbers, NA and NY (or NB) whole numbers\n")
+        sys.stderr.write("shell_nets.py: error: R, L, LAT and A are numbers, NA and NY (or NB) whole numbers\n")
         return 2
-    if not (r > 0 and extent > 0 and na >= 8 and nb >= 2 and (argv[1] == "tube" or extent <= 90)):
-        sys.stderr.write("shell_nets.py: error: need R > 0, L > 0 (or 0 < LAT <= 90), NA >= 8, NY (NB) >= 2\n")
+    r, extent = numbers[0], numbers[1]
+    if not (r > 0 and extent > 0 and na >= (4 if argv[1] == "roof" else 8) and nb >= 2 and
+            (argv[1] != "band" or extent <= 90) and (argv[1] != "roof" or 0 < numbers[2] < 180)):
+        sys.stderr.write("shell_nets.py: error: need R > 0, L > 0 (or 0 < LAT <= 90), 0 < A < 180, NA >= 8 (roof: 4), "
+                         "NY (NB) >= 2\n")
         return 2
-    points, quads = (tube if argv[1] == "tube" else band)(r, extent, na, nb)
-    with open(argv[6], "w") as out:
-        out.write(f"# scripts/shell_nets.py {' '.join(argv[1:6])}\n")
+    points, quads = {"tube": tube, "band": band, "roof": roof}[argv[1]](*numbers, na, nb)
+    if triangles:
+        quads = [t for q in quads for t in ([q[0], q[1], q[2]], [q[0], q[2], q[3]])]
+    with open(argv[-1], "w") as out:
+        out.write(f"# scripts/shell_nets.py {'--triangles ' if triangles else ''}{' '.join(argv[1:-1])}\n")
         for p in points:
             out.write("v " + " ".join(repr(c) for c in p) + "\n")
         for f in quads:

@@ -181,7 +181,8 @@ void Shell::check(const basis::Geometry& geometry) const {
   for (const ShellLineLoad& l : d_.line_loads) check_parts(l.parts, "line load");
   points_.clear();
   for (std::size_t k = 0; k < d_.point_loads.size(); ++k) {
-    points_.push_back(basis::locate_point(geometry, d_.point_loads[k].at, "shell: point load " + std::to_string(k + 1)));
+    points_.push_back(basis::locate_point(geometry, d_.point_loads[k].at, "shell: point load " + std::to_string(k + 1), 1e-6,
+                                          d_.point_allowance));
   }
   supports_.clear();
   for (std::size_t k = 0; k < d_.point_supports.size(); ++k) {
@@ -190,7 +191,8 @@ void Shell::check(const basis::Geometry& geometry) const {
       throw InputError("shell: point support " + std::to_string(k + 1) + ": component " + std::to_string(s.component) +
                        " (0 is x, 1 is y, 2 is z)");
     }
-    supports_.push_back(basis::locate_point(geometry, s.at, "shell: point support " + std::to_string(k + 1)));
+    supports_.push_back(basis::locate_point(geometry, s.at, "shell: point support " + std::to_string(k + 1), 1e-6,
+                                            d_.point_allowance));
   }
   edges_ = geometry.space().boundary_edges();
 }

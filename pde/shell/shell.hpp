@@ -41,7 +41,8 @@ struct ShellLineLoad {
   std::array<std::shared_ptr<const fem::BoundaryFunction>, 3> load;
 };
 
-/// A force at a point of the surface (located to 1e-6 of the net's extent: basis::locate_point).
+/// A force at a point of the surface (located to 1e-6 of the net's extent, or ShellData::point_allowance:
+/// basis::locate_point).
 struct ShellPointLoad {
   Eigen::Vector3d at = Eigen::Vector3d::Zero();
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
@@ -63,6 +64,9 @@ struct ShellData {
   /// At most one support per component (one condition over all its parts).
   std::vector<ShellSupport> supports;
   std::vector<ShellPointSupport> point_supports;
+  /// How far the points of point loads and supports may lie from the surface besides 1e-6 of the net's extent: for
+  /// a geometry fitted to an exact shape whose points are given on the shape (iga-shell: twice --fit-to's distance).
+  double point_allowance = 0.0;
 };
 
 /// The problem for the pipeline, on a surface in 3D or a planar domain (a plate in the plane z = 0, its normal
