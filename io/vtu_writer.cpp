@@ -121,7 +121,7 @@ void sample_element(Index e, const basis::Geometry& geometry, const SamplePatter
   int derivatives = 1;
   for (const SampledField& f : options.fields) derivatives = std::max(derivatives, f.derivatives);
   // Fields with second derivatives on an element at an extraordinary vertex: at field_points, apart.
-  const bool moved = derivatives >= 2 && !geometry.space().polynomial_degree(e) && !geometry.space().rational_form(e);
+  const bool moved = fields_moved(geometry.space(), e, derivatives);
   geometry.space().evaluate(e, p.points, moved ? 1 : derivatives, bv);
   geometry.evaluate(e, bv, gv, /*check=*/false, moved ? 1 : derivatives);
   const bool with_grad = a.grad != nullptr, with_exact = a.exact != nullptr;
@@ -237,8 +237,12 @@ void write_samples(const std::string& path, const basis::Geometry& geometry, con
 
 }  // namespace
 
+bool fields_moved(const basis::Space& space, Index e, int derivatives) {
+  return derivatives >= 2 && !space.polynomial_degree(e) && !space.rational_form(e);
+}
+
 Eigen::Matrix2Xd field_points(const basis::Space& space, Index e, const Eigen::Matrix2Xd& at, int derivatives) {
-  if (derivatives < 2 || space.polynomial_degree(e) || space.rational_form(e)) return at;
+  if (!fields_moved(space, e, derivatives)) return at;
   const Eigen::Vector2d centre =
       space.kind(e).shape == basis::Shape::Triangle ? Eigen::Vector2d(1.0 / 3, 1.0 / 3) : Eigen::Vector2d(0.5, 0.5);
   constexpr double kInside = 1e-6;

@@ -33,6 +33,8 @@ struct SampledField {
 /// where they need not exist at the corner: half-box refuses it): there each point is moved 1e-6 of the way to the
 /// element's centre.
 Eigen::Matrix2Xd field_points(const basis::Space& space, Index e, const Eigen::Matrix2Xd& at, int derivatives);
+/// Whether field_points moves the points of element e (second derivatives on an element at an extraordinary vertex).
+bool fields_moved(const basis::Space& space, Index e, int derivatives);
 
 struct VtuOptions {
   int samples = 5;                             ///< points per direction on each element (>= 2)
