@@ -40,7 +40,7 @@ namespace {
 struct Options {
   iga::io::DiscretisationOptions d;  ///< --basis, --mesh, --degree, --refine, ... (io/discretisation_options.hpp)
   std::string problem, source, dirichlet, neumann, neumann_boundary, neumann_where, exact;
-  std::string petsc_options;
+  std::string petsc_options, partition;
   std::string solver = "cholmod", vtu = "result.vtu", json = "result.json";
   std::string mark = "doerfler", vtu_format = "bezier", net_vtu;
   int threads = 0, samples = 4;
@@ -359,7 +359,7 @@ nlohmann::json solve_run(const Options& o) {
   std::string problem_name;
   const fem::PoissonProblem problem = make_problem(o, geometry, problem_name);
   const std::unique_ptr<quadrature::RuleProvider> rules = iga::io::make_rules(o.d, s);
-  const fem::SolverOptions solver = io::solver_options(o.solver, o.petsc_options, std::move(refined.steps));
+  const fem::SolverOptions solver = io::solver_options(o.solver, o.petsc_options, o.partition, std::move(refined.steps));
 
   log("solving on " + std::to_string(geometry.space().num_dofs()) + " dofs, " +
       std::to_string(geometry.space().num_elements()) + " elements, " + std::to_string(fem::num_threads()) + " threads");
@@ -496,7 +496,8 @@ int main(int argc, char** argv) {
   app.add_flag("--mean-zero", o.mean_zero, "without Dirichlet boundary and reaction (closed surfaces): the solution with mean zero");
   app.add_option("--exact", o.exact, "exact solution u(x,y,z): enables L2 and H1 error norms")->check(iga::io::non_blank());
   app.add_option("--reaction", o.reaction, "c >= 0 in -Δu + c u = f")->check(iga::io::finite_number(0))->capture_default_str();
-  app.add_option("--solver", o.solver, "cholmod, cg (Eigen, incomplete Cholesky), petsc (a PETSc KSP, CG + GAMG by default, on the ranks of mpirun: each assembles its own part of a METIS partition), or mg (PETSc CG + geometric multigrid on the nested spaces of the --refine steps, and of the adaptive steps with --adaptive)")->capture_default_str();
+  app.add_option("--solver", o.solver, "cholmod, cg (Eigen, incomplete Cholesky), petsc (a PETSc KSP, CG + GAMG by default, on the ranks of mpirun: each assembles its own part of the elements, --partition), or mg (PETSc CG + geometric multigrid on the nested spaces of the --refine steps, and of the adaptive steps with --adaptive)")->capture_default_str();
+  iga::io::add_partition_option(app, o.partition);
   app.add_option("--petsc-options", o.petsc_options, "--solver petsc or mg: PETSc options, e.g. '-pc_type hypre' or '-ksp_type preonly -pc_type lu -pc_factor_mat_solver_type mumps' (the PETSC_OPTIONS environment is read too)")->check(iga::io::non_blank());
   app.add_option("--threads", o.threads, "threads for assembly (default: OpenMP's)")->check(iga::io::thread_count());
   app.add_option("--vtu", o.vtu, "ParaView output file ('none' to skip)")->capture_default_str();

@@ -2,6 +2,20 @@
 
 namespace iga::fem {
 
+void LinearSystem::rethrow_with_message(std::exception_ptr error, const std::string& message) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const InputError&) {
+    throw InputError(message);
+  } catch (const UnsupportedError&) {
+    throw UnsupportedError(message);
+  } catch (const NumericalError&) {
+    throw NumericalError(message);
+  } catch (...) {
+    throw Error(message);
+  }
+}
+
 namespace {
 
 // One process's system: the plan's CSC pattern, the conditions by eliminate(), the solve by fem::solve.

@@ -32,8 +32,9 @@ class LinearSystem {
   virtual Eigen::VectorXd sum(const Eigen::VectorXd& own) const { return own; }
   /// Runs f, a step that each process does on its own elements and may fail on one of them only (an element
   /// loop, error norms): a failure anywhere is rethrown on every process, so none waits in a later collective
-  /// call for one that has given up. The process that failed rethrows its own exception; the others an Error with
-  /// the message of the lowest failing rank. Serial: f's exception as it is.
+  /// call for one that has given up. Distributed, every process throws the lowest failing rank's message named
+  /// "rank R of N: ..." (the process that failed keeps its exception's type, the others throw Error). Serial: f's
+  /// exception as it is.
   template <class F>
   void run_everywhere(F&& f) const {
     std::exception_ptr error;
@@ -45,10 +46,14 @@ class LinearSystem {
       mine = e.what();
     }
     const std::optional<std::string> first = first_failure(mine);
+    if (error && first && *first != *mine) rethrow_with_message(error, *first);
     if (error) std::rethrow_exception(error);
     if (first) throw Error(*first);
   }
-  /// The message of the lowest process whose `mine` is set, on every process (serial: mine).
+  /// The exception `error` (InputError, UnsupportedError, NumericalError or else Error) with `message`.
+  [[noreturn]] static void rethrow_with_message(std::exception_ptr error, const std::string& message);
+  /// The message of the lowest process whose `mine` is set, on every process (serial: mine; distributed: named
+  /// "rank R of N: ...").
   virtual std::optional<std::string> first_failure(const std::optional<std::string>& mine) const { return mine; }
   /// Adds terms every process computed alike (boundary loads, Nitsche's terms: small): a (num_dofs², or 0 × 0 for
   /// none) and b (num_dofs, or empty for none). Each process adds the rows it owns.

@@ -3,6 +3,8 @@
 #include <mpi.h>
 #include <petscsys.h>
 
+#include <cstdlib>
+
 #include "core/error.hpp"
 
 namespace iga::fem {
@@ -12,14 +14,27 @@ bool session_open = false;
 bool session_owns_mpi = false;
 }  // namespace
 
-ParallelSession::ParallelSession(int& argc, char**& argv) {
+ParallelSession::ParallelSession(int& argc, char**& argv) : ParallelSession(argc, argv, std::nullopt) {}
+
+ParallelSession::ParallelSession(int& argc, char**& argv, Communicator comm)
+    : ParallelSession(argc, argv, std::optional<Communicator>(comm)) {}
+
+ParallelSession::ParallelSession(int& argc, char**& argv, std::optional<Communicator> comm) {
   if (session_open) throw InputError("a parallel session is already open");
+  // PT-Scotch (the ptscotch partition) on threads of its own needs MPI_THREAD_MULTIPLE and then hung at 4 ranks
+  // on this machine; on one thread it is also the same partition for the same graph. A user's setting is kept.
+  setenv("SCOTCH_PTHREAD_NUMBER", "1", 0);
   int mpi_up = 0;
   MPI_Initialized(&mpi_up);
+  if (comm && !mpi_up) {
+    throw InputError("a parallel session on a driver's communicator needs MPI initialised by the driver first");
+  }
   if (!mpi_up) {
     MPI_Init(&argc, &argv);
     session_owns_mpi = true;
   }
+  // Every object and reduction of iga and PETSc is on PETSC_COMM_WORLD: the driver's communicator, or the world.
+  PETSC_COMM_WORLD = comm ? MPI_Comm_f2c(static_cast<MPI_Fint>(comm->fortran_handle)) : MPI_COMM_WORLD;
   // PETSc's own report of a leftover option at PetscFinalize is replaced by iga's check (fem/petsc_system.cpp).
   PetscOptionsSetValue(nullptr, "-options_left", "0");
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) {

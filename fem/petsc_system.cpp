@@ -104,7 +104,7 @@ class PetscSystem final : public LinearSystem {
     MPI_Bcast(&length, 1, MPI_INT, first, comm_);
     text.resize(static_cast<std::size_t>(length));
     MPI_Bcast(text.data(), length, MPI_CHAR, first, comm_);
-    return text;
+    return "rank " + std::to_string(first) + " of " + std::to_string(ranks()) + ": " + text;
   }
   Eigen::VectorXd sum(const Eigen::VectorXd& own) const override {
     Eigen::VectorXd out(own.size());
@@ -168,7 +168,7 @@ PetscSystem::PetscSystem(const Assembler& assembler, const SolverOptions& option
   assembler.plan(false);  // the colouring of the element loop; the pattern is the distributed matrix's own
   rank_ = rank();
   const int d = assembler.components();
-  const Partition scalar = partition_elements(space, ranks());
+  const Partition scalar = partition_elements(assembler.geometry(), parse_partition(options.partition));
   part_ = with_components(scalar, d);
   own_.resize(part_.element_owner.size());
   for (std::size_t e = 0; e < own_.size(); ++e) own_[e] = part_.element_owner[e] == rank_;
@@ -496,6 +496,7 @@ SolveResult PetscSystem::solve(const DirichletConditions& bc) {
   s.elements_per_rank = gather_over_ranks(part_.owned_elements(rank_));
   s.dofs_per_rank = gather_over_ranks(hi_ - lo_);
   s.element_owner = part_.element_owner;
+  if (part_.parts > 1) s.partition = {part_.method, part_.seconds, part_.interface_dofs / assembler_.components()};
   Reduced r;
   reduce(bc, r);
   // With coupled conditions the reduced system is a copy: the assembled one goes now, before the preconditioner is

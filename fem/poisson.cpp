@@ -336,6 +336,7 @@ void PoissonSolver::solve() {
   r_.elements_per_rank = p.elements_per_rank;
   r_.dofs_per_rank = p.dofs_per_rank;
   r_.element_owner = p.element_owner;
+  r_.partition = p.partition;
   r_.u = p.u;
   done_ = 3;
 }

@@ -65,6 +65,7 @@ struct PoissonResult {
   int ranks = 1;                ///< processes that held the system (SolverKind::Petsc)
   std::vector<Index> elements_per_rank, dofs_per_rank;  ///< owned elements and dofs of each rank (PETSc)
   std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc; for the output's pieces)
+  PartitionFacts partition;        ///< how the elements were parted (PETSc on more than one rank)
   std::optional<ErrorNorms> errors; ///< with an exact solution
   Index neumann_edges = 0, dirichlet_edges = 0;
   double nitsche_penalty = 0.0;     ///< the γ used, or max_K β_K h_K of the local estimate (Nitsche only)

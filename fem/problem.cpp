@@ -99,6 +99,7 @@ void ProblemSolver::solve() {
   r_.elements_per_rank = std::move(s.elements_per_rank);
   r_.dofs_per_rank = std::move(s.dofs_per_rank);
   r_.element_owner = std::move(s.element_owner);
+  r_.partition = s.partition;
   r_.u = std::move(s.x);
   problem_->finish(*sys_->assembler, r_.u);
   r_.quantities = problem_->quantities(*sys_->assembler, r_.u);

@@ -101,6 +101,7 @@ struct ProblemResult {
   int ranks = 1;
   std::vector<Index> elements_per_rank, dofs_per_rank;  ///< owned elements and dofs of each rank (PETSc)
   std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc; for the output's pieces)
+  PartitionFacts partition;        ///< how the elements were parted (PETSc on more than one rank)
   std::vector<NormError> errors;    ///< with an exact solution, in the order of Problem::error_names()
   Choices choices;
   std::vector<std::pair<std::string, double>> quantities;  ///< Problem::quantities

@@ -19,6 +19,13 @@ enum class SolverKind { Cholmod, ConjugateGradient, Petsc, Multigrid };
 /// The solvers that run on a PETSc system (they need an open fem::ParallelSession).
 inline bool uses_petsc(SolverKind kind) { return kind == SolverKind::Petsc || kind == SolverKind::Multigrid; }
 
+/// How a distributed run parted its elements (fem/partition.hpp), for its report.
+struct PartitionFacts {
+  std::string method;         ///< "curve", "ptscotch" or "metis" (empty: not distributed)
+  double seconds = 0.0;       ///< the partition's wall time, the slowest rank's
+  Index interface_dofs = 0;   ///< dofs touched by elements of more than one rank: the cut
+};
+
 struct SolverOptions {
   SolverKind kind = SolverKind::Cholmod;
   double tolerance = 1e-12;   ///< CG and PETSc's KSP: relative residual (unpreconditioned norm)
@@ -26,6 +33,8 @@ struct SolverOptions {
   /// PETSc: options in PETSc's own syntax ("-ksp_type cg -pc_type hypre"), inserted before the KSP reads its
   /// options, so they override the defaults (CG + GAMG) as do those of the PETSC_OPTIONS environment.
   std::string petsc_options;
+  /// PETSc: how the elements are parted among the ranks (fem::parse_partition: "curve", "ptscotch" or "metis").
+  std::string partition = "curve";
   /// Any solver: a solution whose relative residual ||A x - b|| / ||b|| is above this is refused
   /// (NumericalError with the residual), never returned as if it were the answer.
   double max_residual = 1e-6;
@@ -57,6 +66,7 @@ struct SolveResult {
   int ranks = 1;               ///< processes that held the system
   std::vector<Index> elements_per_rank, dofs_per_rank;  ///< owned elements and dofs of each rank (PETSc)
   std::vector<int> element_owner;  ///< per element, the rank that assembled it (PETSc)
+  PartitionFacts partition;        ///< how the elements were parted (PETSc on more than one rank)
 };
 
 /// Solves A x = b for symmetric positive definite A (both triangles stored). NumericalError when the

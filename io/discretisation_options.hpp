@@ -94,13 +94,23 @@ inline void record_given_options(const CLI::App& app, DiscretisationOptions& o) 
   }
 }
 
-/// --solver, --petsc-options, --threads and --max-memory of a PDE program (io/problem_run.hpp).
+/// --partition of a program with --solver petsc or mg (io::solver_options).
+inline void add_partition_option(CLI::App& app, std::string& partition) {
+  app.add_option("--partition", partition,
+                 "--solver petsc or mg on more than one rank: how the elements are parted, curve (a Hilbert curve through "
+                 "the elements' centres, the default), ptscotch (PT-Scotch on the elements' side graph) or metis (METIS "
+                 "on the whole element-dof graph, on every rank); the report's partition says the cut")
+      ->check(CLI::IsMember({"curve", "ptscotch", "metis"}));
+}
+
+/// --solver, --partition, --petsc-options, --threads and --max-memory of a PDE program (io/problem_run.hpp).
 inline void add_solver_options(CLI::App& app, ProblemProgram& run) {
   app.add_option("--solver", run.solver,
                  "cholmod, cg (Eigen, incomplete Cholesky), petsc (a PETSc KSP, CG + GAMG by default, on the ranks of "
-                 "mpirun: each assembles its own part of a METIS partition), or mg (PETSc CG + geometric multigrid on the "
+                 "mpirun: each assembles its own part of the elements, --partition), or mg (PETSc CG + geometric multigrid on the "
                  "nested spaces of the --refine steps)")
       ->check(CLI::IsMember({"cholmod", "cg", "petsc", "mg"}))->capture_default_str();
+  add_partition_option(app, run.partition);
   app.add_option("--petsc-options", run.petsc_options,
                  "--solver petsc or mg: PETSc options, e.g. '-pc_type hypre' or '-mg_levels_pc_type sor' (the "
                  "PETSC_OPTIONS environment is read too)")

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "fem/partition.hpp"
 #include "fem/memory.hpp"
 #include "fem/parallel.hpp"
 #include "fem/threads.hpp"
@@ -49,13 +50,17 @@ void report_problem_result(nlohmann::json& j, const fem::ProblemResult& r, const
   }
 }
 
-fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options,
+fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options, const std::string& partition,
                                   std::vector<Eigen::SparseMatrix<double>> hierarchy) {
   fem::SolverOptions options;
   options.kind = fem::parse_solver(solver);
   options.petsc_options = petsc_options;
   if (!petsc_options.empty() && !fem::uses_petsc(options.kind)) {
     throw InputError("--petsc-options: only with --solver petsc or mg");
+  }
+  if (!partition.empty()) {
+    if (!fem::uses_petsc(options.kind)) throw InputError("--partition: only with --solver petsc or mg");
+    options.partition = fem::partition_name(fem::parse_partition(partition));
   }
   if (options.kind == fem::SolverKind::Multigrid) {
     options.hierarchy = std::make_shared<const std::vector<Eigen::SparseMatrix<double>>>(std::move(hierarchy));
@@ -138,7 +143,7 @@ nlohmann::json run_problem_program(const ProblemProgram& run) {
   j.update(discretisation_report(run.discretisation, d, refined, facts));
   const std::shared_ptr<const fem::Problem> problem = run.problem(geometry, facts, j);
   const std::unique_ptr<quadrature::RuleProvider> rules = make_rules(run.discretisation, d);
-  const fem::SolverOptions solver = solver_options(run.solver, run.petsc_options, std::move(refined.steps));
+  const fem::SolverOptions solver = solver_options(run.solver, run.petsc_options, run.partition, std::move(refined.steps));
   fem::ProblemSolver p(geometry, *rules, problem, solver);
   // The problem's checks come first (setup: the data; assembly: the constraints): an error is the only line.
   progress.phase("setup and pattern", [&] { p.setup(); });

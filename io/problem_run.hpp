@@ -35,6 +35,10 @@ void report_solve(nlohmann::json& j, const Result& r, const fem::SolverOptions& 
     j["elements_per_rank"] = r.elements_per_rank;
     j["dofs_per_rank"] = r.dofs_per_rank;
   }
+  if (!r.partition.method.empty()) {
+    j["partition"] = {{"method", r.partition.method}, {"seconds", r.partition.seconds},
+                      {"interface_dofs", r.partition.interface_dofs}};
+  }
   if (!solver.petsc_options.empty()) j["petsc_options"] = solver.petsc_options;
   j["solver"] = r.solver;
   j["solver_iterations"] = r.solver_iterations;
@@ -56,9 +60,10 @@ void report_solve(nlohmann::json& j, const Result& r, const fem::SolverOptions& 
 void report_problem_result(nlohmann::json& j, const fem::ProblemResult& r, const std::string& quadrature,
                            const fem::SolverOptions& solver);
 
-/// --solver and --petsc-options: InputError naming --petsc-options when it is given for another solver. --solver mg:
-/// the prolongations of the uniform refinement steps (basis::Refinement::steps) are its levels.
-fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options,
+/// --solver, --petsc-options and --partition (empty: the default, fem::SolverOptions::partition): InputError naming
+/// --petsc-options or --partition when it is given for another solver, or an unknown partition. --solver mg: the
+/// prolongations of the uniform refinement steps (basis::Refinement::steps) are its levels.
+fem::SolverOptions solver_options(const std::string& solver, const std::string& petsc_options, const std::string& partition,
                                   std::vector<Eigen::SparseMatrix<double>> hierarchy = {});
 
 /// Whether --solver runs on PETSc (petsc, and mg on a --basis whose spaces are nested: mg on another is refused
@@ -78,7 +83,7 @@ struct ProblemProgram {
   explicit ProblemProgram(std::string name) : program(std::move(name)) {}
   std::string program;  ///< "iga-biharmonic": the log's and the progress' prefix
   DiscretisationOptions discretisation;
-  std::string solver = "cholmod", petsc_options;
+  std::string solver = "cholmod", petsc_options, partition;
   int threads = 0;          ///< 0: OpenMP's
   bool quiet = false;
   bool timer_table = true;  ///< the time per phase on stderr at the end

@@ -16,9 +16,9 @@ packages=(
   # GiNaC: the exact (symbolic) derivatives of expressions (fem/symbolic.cpp).
   libginac-dev
   python3-matplotlib libbenchmark-dev
-  # The distributed solver (--solver petsc): PETSc 3.18 (with hypre and MUMPS), OpenMPI (mpirun), METIS, and
-  # pkg-config, through which CMake finds PETSc.
-  libpetsc-real-dev libopenmpi-dev openmpi-bin libmetis-dev pkg-config
+  # The distributed solver (--solver petsc): PETSc 3.18 (with hypre and MUMPS), OpenMPI (mpirun), METIS, PT-Scotch
+  # (the partition, through PETSc's MatPartitioning), and pkg-config, through which CMake finds PETSc.
+  libpetsc-real-dev libopenmpi-dev openmpi-bin libmetis-dev libscotch-dev libptscotch-dev pkg-config
 )
 # ParaView, to look at the output: Debian's python3-paraview (pvpython) declares Conflicts: python3-vtk9, which
 # libvtk9-dev depends on, so apt would remove it to install ours. The paraview GUI package only recommends

@@ -1,5 +1,5 @@
 // The distributed solver (fem/linear_system.hpp, "petsc") against the serial one, at whatever number of ranks
-// this program is started with (ctest: 1 without mpirun, 2 and 3 under mpirun): the METIS partition, the
+// this program is started with (ctest: 1 without mpirun, 2, 3 and 4 under mpirun): the partitions (curve, PT-Scotch, METIS), the
 // assembled matrix entry by entry, the solution against CHOLMOD's for every backend with Dirichlet and Neumann
 // parts and the coupled constraints of receding boundaries, convergence rates, and failures as one exception on
 // every rank. Every rank runs every test; rank 0 prints.
@@ -8,7 +8,9 @@
 #include "support/parallel_main.hpp"
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "basis/registry.hpp"
 #include "core/error.hpp"
@@ -103,6 +105,91 @@ TEST(Partition, EveryElementOwnedOnceDofsByTheirLowestOwnerAndNumberedByRank) {
     EXPECT_EQ(p.offsets.back(), s.num_dofs());
   }
   EXPECT_THROW(fem::partition_elements(s, static_cast<int>(s.num_elements()) + 1), InputError);
+}
+
+// The Hilbert index (Skilling's transform): on a 2^b grid in 2D and 3D every cell has one index, and cells of
+// consecutive indices share a side, the property that makes runs of the curve compact parts.
+TEST(Partition, HilbertKeysOfConsecutiveCellsShareASide) {
+  for (int n : {2, 3}) {
+    const int bits = n == 2 ? 4 : 3, side = 1 << bits, cells = n == 2 ? side * side : side * side * side;
+    std::vector<std::array<int, 3>> at(static_cast<std::size_t>(cells), {-1, -1, -1});
+    for (int c = 0; c < cells; ++c) {
+      const std::array<std::uint32_t, 3> x{static_cast<std::uint32_t>(c % side), static_cast<std::uint32_t>(c / side % side),
+                                           static_cast<std::uint32_t>(n == 3 ? c / side / side : 0)};
+      const std::uint64_t key = fem::hilbert_key(x, n, bits);
+      ASSERT_LT(key, static_cast<std::uint64_t>(cells));
+      ASSERT_EQ(at[key][0], -1) << "index " << key << " given twice";
+      at[key] = {static_cast<int>(x[0]), static_cast<int>(x[1]), static_cast<int>(x[2])};
+    }
+    for (int k = 1; k < cells; ++k) {
+      int distance = 0;
+      for (int i = 0; i < 3; ++i) distance += std::abs(at[static_cast<std::size_t>(k)][i] - at[static_cast<std::size_t>(k) - 1][i]);
+      EXPECT_EQ(distance, 1) << n << "D, indices " << k - 1 << " and " << k;
+    }
+  }
+}
+
+// Every method parts the elements of every backend the same way on every rank and on a second call; the dofs are
+// owned by their lowest element owner; the reported cut is the dofs whose elements lie on more than one rank; the
+// curve's parts differ by at most one element. The smallest case gives a rank few elements (9 over 3 ranks).
+TEST(Partition, EveryMethodPartsEveryBackendTheSameOnEveryRank) {
+  std::vector<Case> cases = kCases;
+  cases.push_back({"cc", "square_evs.obj", 0});
+  for (const Case& c : cases) {
+    const basis::Geometry g = geometry_of(c);
+    const basis::Space& s = g.space();
+    for (fem::PartitionMethod m : {fem::PartitionMethod::Curve, fem::PartitionMethod::Scotch, fem::PartitionMethod::Metis}) {
+      const std::string what = c.backend + " refine " + std::to_string(c.refine) + " by " + fem::partition_name(m) +
+                               " at " + std::to_string(fem::ranks()) + " ranks";
+      const fem::Partition p = fem::partition_elements(g, m);
+      ASSERT_EQ(p.element_owner.size(), static_cast<std::size_t>(s.num_elements())) << what;
+      EXPECT_EQ(p.method, fem::ranks() > 1 ? fem::partition_name(m) : std::string("none")) << what;
+      Index hash = 0, owned = 0;
+      for (Index e = 0; e < s.num_elements(); ++e) {
+        const int o = p.element_owner[static_cast<std::size_t>(e)];
+        ASSERT_TRUE(o >= 0 && o < fem::ranks()) << what;
+        hash = (hash * 31 + o + 1) % 1000000007;
+      }
+      for (Index h : fem::gather_over_ranks(hash)) EXPECT_EQ(h, hash) << what << ": the ranks disagree";
+      EXPECT_EQ(fem::partition_elements(g, m).element_owner, p.element_owner) << what << ": not reproducible";
+      std::vector<int> lowest(static_cast<std::size_t>(s.num_dofs()), fem::ranks()), highest(lowest.size(), -1);
+      for (Index e = 0; e < s.num_elements(); ++e) {
+        for (Index d : s.dofs(e)) {
+          lowest[static_cast<std::size_t>(d)] = std::min(lowest[static_cast<std::size_t>(d)], p.element_owner[static_cast<std::size_t>(e)]);
+          highest[static_cast<std::size_t>(d)] = std::max(highest[static_cast<std::size_t>(d)], p.element_owner[static_cast<std::size_t>(e)]);
+        }
+      }
+      Index cut = 0;
+      for (std::size_t d = 0; d < lowest.size(); ++d) {
+        EXPECT_EQ(p.dof_owner[d], lowest[d]) << what;
+        cut += highest[d] != lowest[d];
+      }
+      EXPECT_EQ(p.interface_dofs, cut) << what;
+      EXPECT_EQ(p.offsets.back(), s.num_dofs()) << what;
+      for (int r = 0; r < fem::ranks(); ++r) owned += p.owned_elements(r);
+      EXPECT_EQ(owned, s.num_elements()) << what;
+      if (m == fem::PartitionMethod::Curve) {
+        for (int r = 0; r < fem::ranks(); ++r) EXPECT_LE(std::abs(p.owned_elements(r) * fem::ranks() - s.num_elements()), fem::ranks()) << what;
+      }
+    }
+  }
+}
+
+// The distributed solution does not depend on the partition: each method's equals CHOLMOD's to 1e-10.
+TEST(PetscSystem, SolutionEqualsCholmodForEveryPartition) {
+  for (const Case& c : kCases) {
+    const basis::Geometry g = geometry_of(c);
+    const auto rules = rules_of(c, g);
+    const fem::PoissonProblem p = problem_with_neumann();
+    const fem::PoissonResult serial = fem::solve_poisson(g, *rules, p);
+    for (const std::string method : {"curve", "ptscotch", "metis"}) {
+      fem::SolverOptions o = petsc();
+      o.partition = method;
+      const fem::PoissonResult r = fem::solve_poisson(g, *rules, p, o);
+      EXPECT_LE(relative_difference(r.u, serial.u), 1e-10) << c.backend << " by " << method << " at " << fem::ranks() << " ranks";
+      EXPECT_EQ(r.partition.method, fem::ranks() > 1 ? method : std::string()) << c.backend;
+    }
+  }
 }
 
 // The matrix and load the ranks assemble, gathered, equal the serial CSC assembly entry by entry.
@@ -213,6 +300,43 @@ TEST(PetscSystem, ConvergenceRatesEqualTheSerialOnes) {
 }
 
 // A bad option or a KSP that does not converge is one exception with one line, on every rank (no hang).
+// Data that fails on some elements only (a source with no value beyond radius 1.9: the outer ring of elements of the
+// quarter annulus 1 <= r <= 2, whose radial parameter is r - 1, 8 elements across): the ranks owning them fail in
+// the element loop, and every rank throws the lowest failing one's message, named "rank R of N", with its type
+// where the rank failed itself; none waits for another (the test would hang).
+TEST(PetscSystem, AFailureOnOneRanksElementsStopsEveryRankNamingIt) {
+  const Case c{"bspline", "", 3};
+  const basis::Geometry g = geometry_of(c);
+  const auto rules = rules_of(c, g);
+  fem::PoissonProblem p = problem_with_neumann();
+  p.source = fem::make_function([](const Eigen::Vector3d& x) -> double {
+    if (x.head<2>().norm() > 1.9) throw NumericalError("source: no value at radius " + std::to_string(x.head<2>().norm()));
+    return 1.0;
+  });
+  const fem::Partition part = fem::partition_elements(g, fem::PartitionMethod::Curve);
+  int lowest = fem::ranks();  // the lowest rank owning an element of the outer ring (centre radius 1.9375)
+  basis::GeometryValues centre;
+  for (Index e = 0; e < g.space().num_elements(); ++e) {
+    g.evaluate(e, Eigen::Matrix2Xd(Eigen::Vector2d(0.5, 0.5)), centre);
+    if (centre.x.col(0).head<2>().norm() > 1.9) lowest = std::min(lowest, part.element_owner[static_cast<std::size_t>(e)]);
+  }
+  ASSERT_LT(lowest, fem::ranks());
+  std::string what = "no error";
+  try {
+    fem::solve_poisson(g, *rules, p, petsc());
+  } catch (const NumericalError& e) {
+    what = e.what();
+    EXPECT_GE(fem::rank(), lowest) << "a rank that did not fail keeps no type: " << what;
+  } catch (const Error& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("source: no value at radius "), std::string::npos) << what;
+  if (fem::ranks() > 1) {
+    EXPECT_EQ(what.rfind("rank " + std::to_string(lowest) + " of " + std::to_string(fem::ranks()) + ": ", 0), 0u) << what;
+  }
+  EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+}
+
 TEST(PetscSystem, BadOptionsAndFailedSolvesAreOneLineErrors) {
   const Case c{"bspline", "", 2};
   const basis::Geometry g = geometry_of(c);
