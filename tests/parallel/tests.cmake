@@ -45,3 +45,14 @@ set_tests_properties(communicator_3_ranks communicator_4_ranks PROPERTIES LABELS
 # A rank killed mid-run (signal 9, as the out-of-memory killer would) stops every rank within seconds, one line naming it.
 add_test(NAME rank_fault COMMAND /usr/bin/python3 ${CMAKE_CURRENT_LIST_DIR}/rank_fault.py $<TARGET_FILE:iga-poisson> ${MPIEXEC_EXECUTABLE})
 set_tests_properties(rank_fault PROPERTIES LABELS mpi TIMEOUT 120)
+# Every PDE on every backend, distributed, against CHOLMOD (test_pde_ranks.cpp): alone and at 2, 3 and 4 ranks.
+add_executable(test_pde_ranks ${CMAKE_CURRENT_LIST_DIR}/test_pde_ranks.cpp)
+target_compile_options(test_pde_ranks PRIVATE ${IGA_WARNINGS})
+target_link_libraries(test_pde_ranks PRIVATE iga::iga GTest::gtest)
+target_include_directories(test_pde_ranks PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+add_test(NAME pde_ranks_1 COMMAND test_pde_ranks)
+foreach(n 2 3 4)
+  add_test(NAME pde_ranks_${n}
+           COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${n} --allow-run-as-root --oversubscribe $<TARGET_FILE:test_pde_ranks>)
+endforeach()
+set_tests_properties(pde_ranks_1 pde_ranks_2 pde_ranks_3 pde_ranks_4 PROPERTIES LABELS mpi TIMEOUT 600 ENVIRONMENT "OMP_NUM_THREADS=1")
