@@ -535,7 +535,8 @@ int main(int argc, char** argv) {
   return iga::io::run_solver_program("iga-poisson", iga::io::solver_uses_petsc(o.solver, o.d.basis), argv, o.quiet, o.threads, [&] {
     if (iga::fem::ranks() > 1 && (o.adaptive >= 0 || !o.study.empty())) {
       throw iga::UnsupportedError(std::string(o.adaptive >= 0 ? "--adaptive" : "--study") +
-                                  " with --solver " + o.solver + " on more than one rank: not supported yet (run it on one rank)");
+                                  " with --solver " + o.solver + " on more than one rank: not supported yet, each step's estimate, marking and refinement would run on the "
+                                  "whole space on every rank and every rank would write its files (run it on one rank)");
     }
     return o.study.empty() ? run(o) : study(o);
   });

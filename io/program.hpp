@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <cstdlib>
 #include <optional>
 #include <regex>
 #include <sstream>
@@ -146,6 +147,14 @@ inline std::string plain_cli_message(const std::string& what) {
   if (std::regex_match(what, m, convert)) return m[1].str() + ": cannot read '" + m[2].str() + "' as its value";
   return what;
 }
+
+/// This process's rank as the MPI launcher set it (Open MPI, PMIx, MPICH's PMI), 0 outside a launcher.
+inline int launcher_rank() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"}) {
+    if (const char* value = std::getenv(name)) return std::atoi(value);
+  }
+  return 0;
+}
 }  // namespace detail
 
 /// Parses argv. Returns an exit code when the program must stop now: 0 after --help or --version, 2 (one line on
@@ -155,6 +164,12 @@ inline std::string plain_cli_message(const std::string& what) {
 /// --export-config cannot be written; std::nullopt when the run goes on.
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv, const CommonOptions& common) {
   const std::string& program = common.program;
+  // Under mpirun every rank reads the same arguments: rank 0 alone speaks (a parallel session mutes the others
+  // again), so a usage error is one line, not one per rank interleaved.
+  if (detail::launcher_rank() > 0) {
+    std::cerr.setstate(std::ios::failbit);
+    std::cout.setstate(std::ios::failbit);
+  }
   // --config FILE: a file that is not there is bad input, said in the words of input_file().
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];

@@ -83,6 +83,20 @@ lines = r.stderr.strip().splitlines()
 check(r.returncode != 0 and len(lines) == 1 and ("is infinite at" in lines[0] or "is not finite at" in lines[0]),
       f"a failure on one rank: exit {r.returncode}, stderr {r.stderr!r}")
 
+# --adaptive and --study on more than one rank: refused by name with the reason, one line, exit 1 on every rank; a
+# usage error under mpirun is one line too (rank 0's), not one per rank.
+for option in (["--refine", "2", "--adaptive", "2"], ["--study", "1:3"]):
+    r = run(mpirun + [exe, "--quiet", "--solver", "petsc", "--vtu", "none", "--json", "none"] + option)
+    lines = r.stderr.strip().splitlines()
+    name = option[-2]
+    check(r.returncode != 0 and len(lines) == 1 and f"{name} with --solver petsc on more than one rank: not supported yet, "
+          "each step's estimate, marking and refinement would run on the whole space on every rank" in lines[0],
+          f"{name} on 2 ranks: exit {r.returncode}, stderr {r.stderr!r}")
+
+r = run(mpirun + [exe, "--quiet", "--solver", "petsc", "--study", "1:3", "--refine", "2"])
+check(r.returncode == 2 and r.stderr.strip().splitlines() == ["iga-poisson: error: --study excludes --refine"],
+      f"a usage error on 2 ranks: exit {r.returncode}, stderr {r.stderr!r}")
+
 # --solver mg (geometric multigrid on the --refine steps) without mpirun and at 2 ranks: CHOLMOD's errors to 1e-8, the
 # same iteration count on both, the report's multigrid object; a solve stopped by its iteration limit is one line.
 iterations = []
