@@ -83,6 +83,21 @@ lines = r.stderr.strip().splitlines()
 check(r.returncode != 0 and len(lines) == 1 and ("is infinite at" in lines[0] or "is not finite at" in lines[0]),
       f"a failure on one rank: exit {r.returncode}, stderr {r.stderr!r}")
 
+# --partition: the report names the method and its cut (2 ranks of the 16 x 16 bicubic patch share at least the
+# 3 x 19 dofs of a cut along one parametric line), the same errors; with a serial solver it is refused.
+for method in ("curve", "ptscotch", "metis"):
+    r = run(mpirun + [exe] + common + ["--solver", "petsc", "--partition", method, "--vtu", "none", "--json", method + ".json"])
+    check(r.returncode == 0, f"--partition {method}: exit {r.returncode}: {r.stderr}")
+    if r.returncode == 0:
+        s, p = json.load(open(os.path.join(work, "serial.json"))), json.load(open(os.path.join(work, method + ".json")))
+        part = p.get("partition", {})
+        check(part.get("method") == method and part.get("interface_dofs", 0) >= 3 * 19 and part.get("seconds", -1) >= 0,
+              f"--partition {method}: report {part}")
+        check(abs(p["l2_error"] - s["l2_error"]) <= 1e-8 * s["l2_error"], f"--partition {method}: {p['l2_error']}")
+r = run([exe] + common + ["--partition", "curve", "--vtu", "none", "--json", "none"])
+check(r.returncode == 1 and r.stderr.strip() == "iga-poisson: error: --partition: only with --solver petsc or mg",
+      f"--partition with CHOLMOD: exit {r.returncode}, stderr {r.stderr!r}")
+
 # --adaptive and --study on more than one rank: refused by name with the reason, one line, exit 1 on every rank; a
 # usage error under mpirun is one line too (rank 0's), not one per rank.
 for option in (["--refine", "2", "--adaptive", "2"], ["--study", "1:3"]):

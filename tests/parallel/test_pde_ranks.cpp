@@ -3,6 +3,7 @@
 // (clamped) on B-splines, Catmull–Clark, polyhedral and half-box splines, with one case of 36 elements (a rank of 9 at
 // 4 ranks); elasticity (held all round, a body force) on the same four; the Kirchhoff–Love shell (held all round, an
 // area load) on a B-spline cylinder patch and on the Catmull–Clark and polyhedral hemisphere band.
+#include "support/backend_cases.hpp"
 #include "support/paths.hpp"
 #include "support/biharmonic_solutions.hpp"
 #include "support/parallel_main.hpp"
@@ -26,20 +27,8 @@ using namespace iga;
 
 namespace {
 
-struct Case {
-  std::string backend, mesh;  // mesh empty: the backend's default geometry
-  int refine;
-};
-
-basis::Geometry geometry_of(const Case& c) {
-  basis::BackendFacts facts;
-  basis::BackendOptions options;
-  if (c.backend == "bspline") options.degree = 3;
-  if (c.mesh.empty()) return basis::make_refined_geometry(basis::backend(c.backend), nullptr, options, c.refine, facts).geometry;
-  mesh::PolyMesh m = mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/" + c.mesh);
-  if (c.backend == "halfbox") m = mesh::dual_net(m);
-  return basis::make_refined_geometry(basis::backend(c.backend), &m, options, c.refine, facts).geometry;
-}
+using Case = test::BackendCase;
+using test::geometry_of;
 
 std::vector<int> all_parts(const basis::Geometry& g) {
   std::vector<int> parts(g.space().boundary_part_names().size());

@@ -3,6 +3,7 @@
 // assembled matrix entry by entry, the solution against CHOLMOD's for every backend with Dirichlet and Neumann
 // parts and the coupled constraints of receding boundaries, convergence rates, and failures as one exception on
 // every rank. Every rank runs every test; rank 0 prints.
+#include "support/backend_cases.hpp"
 #include "support/paths.hpp"
 #include "support/mixed_problem.hpp"
 #include "support/parallel_main.hpp"
@@ -29,24 +30,8 @@ using namespace iga;
 
 namespace {
 
-mesh::PolyMesh net_of(const std::string& backend, const std::string& file) {
-  mesh::PolyMesh m = mesh::read_obj(std::string(IGA_SOURCE_DIR) + "/data/meshes/" + file);
-  return backend == "halfbox" ? mesh::dual_net(m) : m;
-}
-
-struct Case {
-  std::string backend, mesh;  // mesh empty: the backend's default geometry
-  int refine;
-};
-
-basis::Geometry geometry_of(const Case& c) {
-  basis::BackendFacts facts;
-  basis::BackendOptions options;
-  if (c.backend == "bspline") options.degree = 3;
-  if (c.mesh.empty()) return basis::make_refined_geometry(basis::backend(c.backend), nullptr, options, c.refine, facts).geometry;
-  const mesh::PolyMesh net = net_of(c.backend, c.mesh);
-  return basis::make_refined_geometry(basis::backend(c.backend), &net, options, c.refine, facts).geometry;
-}
+using Case = test::BackendCase;
+using test::geometry_of;
 
 std::unique_ptr<quadrature::RuleProvider> rules_of(const Case& c, const basis::Geometry& g) {
   const basis::Backend& b = basis::backend_of(g.space());
